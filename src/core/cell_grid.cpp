@@ -1,0 +1,75 @@
+#include "core/cell_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/parallel.h"
+
+namespace slamsph {
+
+void CellGrid::build(std::span<const Vec2> pts, double cell) {
+  cell_ = cell;
+  inv_cell_ = 1.0 / cell;
+  sorted_.assign(pts.size(), 0);
+  if (pts.empty()) {
+    nx_ = ny_ = 0;
+    start_.assign(1, 0);
+    return;
+  }
+  Vec2 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec2 hi{-lo.x, -lo.y};
+  for (const Vec2& p : pts) {
+    lo.x = std::min(lo.x, p.x);
+    lo.y = std::min(lo.y, p.y);
+    hi.x = std::max(hi.x, p.x);
+    hi.y = std::max(hi.y, p.y);
+  }
+  lo_ = lo;
+  nx_ = static_cast<int>((hi.x - lo.x) * inv_cell_) + 1;
+  ny_ = static_cast<int>((hi.y - lo.y) * inv_cell_) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx_) * ny_;
+  start_.assign(ncell + 1, 0);
+  std::vector<std::uint32_t> cell_of(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const std::uint32_t c =
+        static_cast<std::uint32_t>(cell_y(pts[i].y)) * nx_ + cell_x(pts[i].x);
+    cell_of[i] = c;
+    ++start_[c + 1];
+  }
+  for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < pts.size(); ++i) sorted_[fill[cell_of[i]]++] = i;
+}
+
+void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
+                          const CellGrid& grid, double radius, bool skip_self,
+                          const Executor& exec, NeighbourList& out) {
+  const std::size_t n = queries.size();
+  const double r2 = radius * radius;
+  out.start.assign(n + 1, 0);
+  // Pass 1: count. Pass 2: fill. Both gather-style over queries.
+  exec.for_each(n, [&](std::size_t i) {
+    std::uint32_t c = 0;
+    const Vec2 q = queries[i];
+    grid.for_each_candidate(q, [&](std::uint32_t j) {
+      if (skip_self && j == i) return;
+      if (norm2(q - pts[j]) < r2) ++c;
+    });
+    out.start[i + 1] = c;
+  });
+  for (std::size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
+  out.index.resize(out.start[n]);
+  exec.for_each(n, [&](std::size_t i) {
+    std::uint32_t* dst = out.index.data() + out.start[i];
+    std::uint32_t k = 0;
+    const Vec2 q = queries[i];
+    grid.for_each_candidate(q, [&](std::uint32_t j) {
+      if (skip_self && j == i) return;
+      if (norm2(q - pts[j]) < r2) dst[k++] = j;
+    });
+    std::sort(dst, dst + k);
+  });
+}
+
+}  // namespace slamsph

@@ -1,0 +1,75 @@
+// Cell-linked list (spec §1): points binned into square cells no smaller than the search
+// radius, so a search visits the 3x3 block of cells around a query. Binning is a serial
+// counting sort, hence deterministic; queries are read-only and thread-safe.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace slamsph {
+
+class CellGrid {
+ public:
+  // Bins `pts` into cells of size `cell` covering their bounding box.
+  void build(std::span<const Vec2> pts, double cell);
+
+  // Calls f(j) for every binned point j in the 3x3 cells around p (a superset of the
+  // points within `cell` of p). Points outside the grid are clamped to the border cells.
+  template <class F>
+  void for_each_candidate(Vec2 p, F&& f) const {
+    if (sorted_.empty()) return;
+    const int cx = cell_x(p.x), cy = cell_y(p.y);
+    for (int jy = cy - 1; jy <= cy + 1; ++jy) {
+      if (jy < 0 || jy >= ny_) continue;
+      const int x0 = cx > 0 ? cx - 1 : 0;
+      const int x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
+      if (x0 > x1) continue;
+      // Cells of one row are contiguous in `sorted_`.
+      const std::uint32_t b = start_[static_cast<std::size_t>(jy) * nx_ + x0];
+      const std::uint32_t e = start_[static_cast<std::size_t>(jy) * nx_ + x1 + 1];
+      for (std::uint32_t k = b; k < e; ++k) f(sorted_[k]);
+    }
+  }
+
+  // Point indices in cell order (row-major by y, then x): a locality-friendly ordering.
+  const std::vector<std::uint32_t>& cell_order() const { return sorted_; }
+  double cell_size() const { return cell_; }
+
+ private:
+  int cell_x(double x) const {
+    const int c = static_cast<int>((x - lo_.x) * inv_cell_);
+    return c < 0 ? 0 : (c >= nx_ ? nx_ - 1 : c);
+  }
+  int cell_y(double y) const {
+    const int c = static_cast<int>((y - lo_.y) * inv_cell_);
+    return c < 0 ? 0 : (c >= ny_ ? ny_ - 1 : c);
+  }
+
+  Vec2 lo_;
+  double cell_ = 1.0, inv_cell_ = 1.0;
+  int nx_ = 0, ny_ = 0;
+  std::vector<std::uint32_t> start_;   // nx*ny + 1 offsets into sorted_
+  std::vector<std::uint32_t> sorted_;  // point indices grouped by cell
+};
+
+// Compressed neighbour lists: neighbours of query i are index[start[i] .. start[i+1]).
+struct NeighbourList {
+  std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> index;
+  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+  std::size_t count(std::size_t i) const { return start[i + 1] - start[i]; }
+};
+
+class Executor;
+
+// For every query point, the grid points strictly closer than `radius` (radius <= cell
+// size). With `skip_self`, query i does not list point i (queries and points the same
+// set). Neighbours appear in ascending index order, so the list is independent of the
+// thread count and of the binning.
+void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
+                          const CellGrid& grid, double radius, bool skip_self,
+                          const Executor& exec, NeighbourList& out);
+
+}  // namespace slamsph

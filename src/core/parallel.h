@@ -1,0 +1,54 @@
+// The one place that knows about threads (style.md §5). Every loop over particles goes
+// through Executor::for_each with a gather-style body (each iteration writes only its own
+// entries), so results are bit-identical for any thread count (no atomics, no
+// order-dependent reductions). max_of is exact in any order.
+#pragma once
+#include <cstddef>
+#include <limits>
+
+namespace slamsph {
+
+class Executor {
+ public:
+  explicit Executor(int threads = 1);
+  int threads() const { return threads_; }
+
+  template <class F>
+  void for_each(std::size_t n, F&& f) const {
+    const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(static) num_threads(threads_) if (count > 256)
+    for (long long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+  }
+
+  // Chunked variant: f(begin, end) on contiguous ranges, one or more per thread.
+  template <class F>
+  void for_ranges(std::size_t n, F&& f) const {
+    const long long chunks = threads_;
+#pragma omp parallel for schedule(static, 1) num_threads(threads_)
+    for (long long c = 0; c < chunks; ++c) {
+      const std::size_t b = n * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
+      const std::size_t e = n * static_cast<std::size_t>(c + 1) / static_cast<std::size_t>(chunks);
+      f(b, e);
+    }
+  }
+
+  // max over i of g(i); returns `init` for n == 0. Max is order-independent, hence exact.
+  template <class G>
+  double max_of(std::size_t n, G&& g, double init = -std::numeric_limits<double>::infinity()) const {
+    double m = init;
+    const long long count = static_cast<long long>(n);
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m) if (count > 256)
+    for (long long i = 0; i < count; ++i) {
+      const double v = g(static_cast<std::size_t>(i));
+      if (v > m) m = v;
+    }
+    return m;
+  }
+
+  static int hardware_threads();
+
+ private:
+  int threads_ = 1;
+};
+
+}  // namespace slamsph

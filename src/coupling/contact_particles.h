@@ -1,0 +1,34 @@
+// The fluid's view of every solid particle, tank walls and bodies alike (spec §4): the
+// solid particles are the fluid's boundary particles. The driver gathers this from the
+// bodies before the fluid pass and scatters `force` back afterwards.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace slamsph {
+
+struct ContactParticles {
+  std::vector<Vec2> x;        // position [m]
+  std::vector<Vec2> v;        // velocity [m/s]
+  std::vector<Vec2> a;        // acceleration used in the virtual pressure [m/s^2]
+  std::vector<double> volume; // current particle volume [m^2]
+  std::vector<double> p;      // virtual pressure p' [Pa] (spec §4)
+  std::vector<double> rho;    // virtual density rho' from the inverse EOS [kg/m^3]
+  std::vector<Vec2> v_noslip; // mirrored velocity for viscous terms (Eq. 14) [m/s]
+  std::vector<std::uint8_t> wetted;  // 1 if it has fluid neighbours (takes part)
+  std::vector<Vec2> force;          // total fluid force on the particle [N/m]
+  std::vector<Vec2> force_viscous;  // its viscous part [N/m]
+  std::vector<std::uint32_t> body;  // owning body index
+  std::vector<std::uint32_t> local; // index inside the body
+
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n) {
+    x.resize(n); v.resize(n); a.resize(n); volume.resize(n); p.resize(n); rho.resize(n);
+    v_noslip.resize(n); wetted.resize(n); force.resize(n); force_viscous.resize(n);
+    body.resize(n); local.resize(n);
+  }
+};
+
+}  // namespace slamsph

@@ -1,0 +1,141 @@
+// In-memory form of a case file (schema_version 1). Every field has its resolved value
+// after parsing: defaults are filled in by the parser and written back out in
+// case.resolved.toml. docs/case_format.md documents every key; SI units throughout.
+#pragma once
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/kernel.h"
+#include "core/vec.h"
+
+namespace slamsph {
+
+struct Box {
+  Vec2 min, max;
+};
+
+struct NumericsConfig {
+  double dx = 0.0;                 // fluid particle spacing [m] (required)
+  double h_over_dx = 1.3;          // smoothing length ratio [-]
+  KernelType kernel = KernelType::WendlandC2;
+  double cfl = 0.25;               // fluid acoustic CFL number [-] (spec §2)
+  double solid_cfl = 0.5;          // solid CFL number [-] (spec §3)
+  double end_time = 0.0;           // [s] (required)
+  Vec2 gravity{0.0, -9.81};        // [m/s^2]
+  double neighbour_skin = 0.1;     // Verlet skin as a fraction of the kernel support [-]
+  bool dual_time_stepping = true;  // sub-cycle solids inside a fluid step (spec §6)
+  double dt_floor = 1e-9;          // a step below this is divergence [s]
+  Box domain;                      // a particle leaving this box is divergence [m] (required)
+};
+
+struct FluidBlockConfig {
+  Box box;                 // filled with particles on a dx lattice, centred in cells [m]
+  double surface = 0.0;    // still free-surface height for hydrostatic init [m] (default box.max.y)
+};
+
+struct FluidConfig {
+  double density = 1000.0;     // rest density rho0 [kg/m^3]
+  double sound_speed = 0.0;    // artificial sound speed c0 [m/s] (required)
+  double gamma = 7.0;          // Tait exponent [-]
+  double limiter_omega = 3.0;  // low-dissipation limiter ω (spec §2) [-]
+  double viscosity = 0.0;      // kinematic viscosity (0 = inviscid) [m^2/s]
+  std::vector<FluidBlockConfig> blocks;
+};
+
+struct MaterialConfig {
+  std::string name;
+  std::string model = "svk";   // "svk" (St Venant–Kirchhoff, plane strain)
+  double density = 0.0;        // [kg/m^3]
+  double youngs_modulus = 0.0; // [Pa]
+  double poisson_ratio = 0.0;  // [-]
+  double av_alpha = 1.0;       // Monaghan artificial viscosity α [-] (spec §3)
+  double av_beta = 0.0;        // Monaghan artificial viscosity β [-]
+  double hourglass = 0.0;      // hourglass control coefficient [-] (0 = off)
+};
+
+struct ShapeConfig {
+  // "rectangle" (box), "disc" (centre, radius), "ring" (centre, inner/outer radius,
+  // layers through the thickness), "polygon" (vertices), "tank" (inner box, wall layers,
+  // open top).
+  std::string type;
+  Box box;
+  Vec2 centre;
+  double radius = 0.0;
+  double inner_radius = 0.0;
+  double outer_radius = 0.0;
+  int layers = 0;  // ring: layers through the thickness; tank: wall layers (default 4)
+  std::vector<Vec2> vertices;
+  bool open_top = true;  // tank
+};
+
+struct ClampConfig {
+  std::optional<Box> box;   // particles inside are held fixed
+  std::vector<int> layers;  // ring layers held fixed (0 = innermost)
+};
+
+struct MotionPoint {
+  double t = 0.0;  // [s]
+  Vec2 v;          // [m/s]
+};
+
+struct BodyConfig {
+  std::string name;
+  // "elastic", "rigid_fixed", "rigid_prescribed", "rigid_free"
+  std::string kind = "elastic";
+  std::string scheme = "tl_sfpm";  // elastic only: "tl_sfpm" or "tlsph" (full support)
+  std::string material;            // name of a [materials.*] table; rigid bodies: density only
+  ShapeConfig shape;
+  double dx = 0.0;                 // particle spacing [m] (default numerics.dx)
+  double h_over_dx = 0.0;          // default numerics.h_over_dx
+  Vec2 velocity;                   // initial velocity [m/s]
+  double angular_velocity = 0.0;   // initial angular velocity [rad/s]
+  // Optional initial velocity profile: "" or "cantilever_mode" (Gray et al. 2001, with
+  // mode_vf and the clamp's free end at shape.box.max.x).
+  std::string initial_profile;
+  double mode_vf = 0.0;
+  ClampConfig clamp;
+  std::vector<MotionPoint> motion;  // rigid_prescribed: velocity table (linear in t)
+  std::optional<double> mass;       // rigid_free: [kg/m] (default density × area)
+  std::optional<double> inertia;    // rigid_free: [kg m^2/m] (default from particles)
+  bool allow_rotation = true;       // rigid_free
+  bool gravity = true;              // body feels gravity
+};
+
+struct ProbeConfig {
+  std::string name;
+  // "pressure" (kernel-weighted at position), "surge_front" (largest fluid x),
+  // "water_height" (at x), "body_pressure" (attached to body surface near position)
+  std::string kind;
+  Vec2 position;
+  double x = 0.0;
+  std::string body;
+};
+
+struct OutputConfig {
+  double interval = 0.0;        // VTK interval [s] (default end_time/50)
+  double probe_interval = 0.0;  // probes.csv interval [s] (0 = every fluid step)
+  bool vtk = true;
+  std::string plot;             // "" or "cylinder_entry", "dam_break", "plate", "gate"
+  std::vector<ProbeConfig> probes;
+};
+
+struct CaseConfig {
+  int schema_version = 1;
+  std::string name;
+  std::string source_path;  // the file it came from (for messages)
+  NumericsConfig numerics;
+  FluidConfig fluid;
+  std::vector<MaterialConfig> materials;
+  std::vector<BodyConfig> bodies;
+  OutputConfig output;
+
+  const MaterialConfig* find_material(const std::string& n) const {
+    for (const auto& m : materials)
+      if (m.name == n) return &m;
+    return nullptr;
+  }
+};
+
+}  // namespace slamsph
