@@ -86,6 +86,9 @@ struct BodyConfig {
   std::string kind = "elastic";
   std::string scheme = "tl_sfpm";  // elastic only: "tl_sfpm" or "tlsph" (full support)
   std::string material;            // name of a [materials.*] table; rigid bodies: density only
+  // Particle density [kg/m^3]: elastic = the material's; rigid = `density` on the body, else
+  // the material's, else (rigid_fixed / rigid_prescribed only) fluid.density.
+  double density = 0.0;
   ShapeConfig shape;
   double dx = 0.0;                 // particle spacing [m] (default numerics.dx)
   double h_over_dx = 0.0;          // default numerics.h_over_dx
