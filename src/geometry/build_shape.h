@@ -1,0 +1,17 @@
+// Dispatch from a case file's [body.shape] to the geometry builders:
+// rectangle → fill_box(box), disc → disc(centre, radius), ring → ring(centre, inner_radius,
+// outer_radius, layers; layers 0 → round(thickness/dx)), polygon → polygon(vertices),
+// tank → tank_walls(box as the inner box, layers; 0 → 4, open_top).
+#pragma once
+#include "geometry/particle_lattice.h"
+#include "io/case_config.h"
+
+namespace slamsph {
+
+ParticleLattice build_shape(const ShapeConfig& shape, double dx);  // throws std::invalid_argument
+
+// Axis-aligned bounding box of the particles' cells a shape produces (tank: including its
+// walls) — used to check a body lies inside the domain before building it.
+Box shape_bounds(const ShapeConfig& shape, double dx);
+
+}  // namespace slamsph

@@ -1,0 +1,35 @@
+// Output of the geometry builders: particle positions with the area each particle stands
+// for (its volume per unit length, m^2) and, for layered shapes, its layer index. Builders
+// are pure functions (style.md §7); compose them by appending lattices.
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace slamsph {
+
+struct ParticleLattice {
+  std::vector<Vec2> x;         // position [m]
+  std::vector<double> volume;  // area represented by the particle [m^2]
+  std::vector<int> layer;      // layer index (0 = innermost / nearest the surface), -1 if none
+
+  std::size_t size() const { return x.size(); }
+  void add(Vec2 p, double v, int l = -1) {
+    x.push_back(p);
+    volume.push_back(v);
+    layer.push_back(l);
+  }
+  void append(const ParticleLattice& o) {
+    x.insert(x.end(), o.x.begin(), o.x.end());
+    volume.insert(volume.end(), o.volume.begin(), o.volume.end());
+    layer.insert(layer.end(), o.layer.begin(), o.layer.end());
+  }
+  double total_volume() const {
+    double s = 0.0;
+    for (double v : volume) s += v;
+    return s;
+  }
+};
+
+}  // namespace slamsph
