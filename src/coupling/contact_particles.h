@@ -18,6 +18,7 @@ struct ContactParticles {
   std::vector<double> rho;    // virtual density rho' from the inverse EOS [kg/m^3]
   std::vector<Vec2> v_noslip; // mirrored velocity for viscous terms (Eq. 14) [m/s]
   std::vector<std::uint8_t> wetted;  // 1 if it has fluid neighbours (takes part)
+  std::vector<Vec2> normal;  // outward unit surface normal; zero inside a body (leak check)
   std::vector<Vec2> force;          // total fluid force on the particle [N/m]
   std::vector<Vec2> force_viscous;  // its viscous part [N/m]
   std::vector<std::uint32_t> body;  // owning body index
@@ -26,7 +27,7 @@ struct ContactParticles {
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n) {
     x.resize(n); v.resize(n); a.resize(n); volume.resize(n); p.resize(n); rho.resize(n);
-    v_noslip.resize(n); wetted.resize(n); force.resize(n); force_viscous.resize(n);
+    v_noslip.resize(n); wetted.resize(n); normal.resize(n); force.resize(n); force_viscous.resize(n);
     body.resize(n); local.resize(n);
   }
 };

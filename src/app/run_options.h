@@ -1,0 +1,17 @@
+// Command-line options of `slamsph run`.
+#pragma once
+#include <optional>
+#include <string>
+
+namespace slamsph {
+
+struct RunOptions {
+  std::string out_dir = "results";
+  int threads = 0;                  // 0 = all hardware threads
+  std::optional<double> end_time;   // overrides numerics.end_time
+  std::optional<long> max_steps;    // stop after this many fluid steps
+  bool quiet = false;               // no progress line, no banner
+  bool write_output = true;         // false: no VTK/CSV (benchmarks)
+};
+
+}  // namespace slamsph

@@ -1,0 +1,76 @@
+#include "coupling/contact_rates.h"
+
+#include "coupling/contact_pair.h"
+
+namespace slamsph {
+
+namespace {
+
+ContactPairInput pair_input(const FluidParticles& f, std::size_t i, const ContactParticles& c,
+                            std::size_t s) {
+  return {f.x[i], f.v[i],        f.rho[i], f.p[i], f.m[i] / f.rho[i], c.x[s],
+          c.v[s], c.v_noslip[s], c.rho[s], c.p[s], c.volume[s]};
+}
+
+template <bool kViscous>
+void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
+              const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+  exec.for_each(f.size(), [&](std::size_t i) {
+    const std::uint32_t b = fc.start[i], e = fc.start[i + 1];
+    if (b == e) return;
+    Vec2 force;
+    double drho = 0.0;
+    for (std::uint32_t k = b; k < e; ++k) {
+      const std::uint32_t s = fc.index[k];
+      if (!c.wetted[s]) continue;
+      const ContactPairResult r =
+          contact_pair<kViscous>(pair_input(f, i, c, s), kernel, prm.c0, prm.omega, prm.viscosity);
+      if (!r.active) continue;
+      force += r.force + r.force_viscous;
+      drho += r.drho_term;
+    }
+    f.a[i] += force / f.m[i];
+    f.drho[i] += 2.0 * f.rho[i] * drho;
+  });
+}
+
+template <bool kViscous>
+void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
+              const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+  exec.for_each(c.size(), [&](std::size_t s) {
+    Vec2 force, visc;
+    if (c.wetted[s]) {
+      for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
+        const std::uint32_t i = cf.index[k];
+        const ContactPairResult r = contact_pair<kViscous>(pair_input(f, i, c, s), kernel, prm.c0,
+                                                           prm.omega, prm.viscosity);
+        if (!r.active) continue;
+        force -= r.force + r.force_viscous;
+        visc -= r.force_viscous;
+      }
+    }
+    c.force[s] = force;
+    c.force_viscous[s] = visc;
+  });
+}
+
+}  // namespace
+
+void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
+                          const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+  if (prm.viscosity > 0.0)
+    to_fluid<true>(f, c, fc, kernel, prm, exec);
+  else
+    to_fluid<false>(f, c, fc, kernel, prm, exec);
+}
+
+void compute_contact_reaction(ContactParticles& c, const FluidParticles& f,
+                              const NeighbourList& cf, const Kernel& kernel,
+                              const ContactParams& prm, const Executor& exec) {
+  if (prm.viscosity > 0.0)
+    reaction<true>(c, f, cf, kernel, prm, exec);
+  else
+    reaction<false>(c, f, cf, kernel, prm, exec);
+}
+
+}  // namespace slamsph

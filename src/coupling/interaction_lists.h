@@ -1,0 +1,46 @@
+// Verlet neighbour lists for everything the fluid touches (spec §1): fluid–fluid,
+// fluid→solid and solid→fluid, built from cell-linked lists with a skin. They are
+// rebuilt when any fluid or contact particle has moved more than half the skin since
+// the last build, which keeps every pair inside the kernel support in the lists.
+// On each rebuild the fluid particles are reordered into cell order for memory locality.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/cell_grid.h"
+#include "core/parallel.h"
+#include "coupling/contact_particles.h"
+#include "fluid/fluid_particles.h"
+
+namespace slamsph {
+
+class InteractionLists {
+ public:
+  // support_ff: fluid kernel support; support_fc: contact kernel support; skin [m].
+  InteractionLists(double support_ff, double support_fc, double skin)
+      : support_ff_(support_ff), support_fc_(support_fc), skin_(skin) {}
+
+  // Rebuilds if needed (or if `force`); returns true if it rebuilt. May permute `f`.
+  bool update(FluidParticles& f, const ContactParticles& c, const Executor& exec,
+              bool force = false);
+
+  const NeighbourList& ff() const { return ff_; }
+  const NeighbourList& fc() const { return fc_; }
+  const NeighbourList& cf() const { return cf_; }
+  long rebuilds() const { return rebuilds_; }
+  // Fluid grid of the last build; a query radius up to cell_size() - skin is safe, since
+  // no particle has moved more than skin/2 since.
+  const CellGrid& fluid_grid() const { return fluid_grid_; }
+  // Permutation applied to the fluid at the last rebuild (new[k] = old[perm[k]]).
+  const std::vector<std::uint32_t>& last_permutation() const { return perm_; }
+
+ private:
+  double support_ff_, support_fc_, skin_;
+  CellGrid fluid_grid_, contact_grid_;
+  NeighbourList ff_, fc_, cf_;
+  std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
+  std::vector<std::uint32_t> perm_;
+  long rebuilds_ = 0;
+};
+
+}  // namespace slamsph

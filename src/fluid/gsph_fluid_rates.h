@@ -1,0 +1,25 @@
+// Fluid–fluid GSPH rates, spec §2 / paper Eqs. 1–3, computed in one fused pass:
+//   drho_i/dt = 2 rho_i sum_j (m_j/rho_j) (v_i - v*) . grad_i W_ij
+//   dv_i/dt   = -2 sum_j m_j p*/(rho_i rho_j) grad_i W_ij + g  (+ Morris viscosity)
+// Only v* . e_ij = U* enters the continuity term, because (v_i - v*) is contracted with
+// grad_i W_ij, which is parallel to e_ij. The pass overwrites `a` and `drho`; contact
+// terms (coupling/) are added afterwards.
+#pragma once
+#include "core/cell_grid.h"
+#include "core/kernel.h"
+#include "core/parallel.h"
+#include "fluid/fluid_particles.h"
+
+namespace slamsph {
+
+struct GsphParams {
+  double c0 = 0.0;         // sound speed [m/s]
+  double omega = 3.0;      // low-dissipation limiter [-]
+  double viscosity = 0.0;  // kinematic viscosity [m^2/s]; 0 = inviscid
+  Vec2 gravity;            // [m/s^2]
+};
+
+void compute_gsph_fluid_rates(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+                              const GsphParams& prm, const Executor& exec);
+
+}  // namespace slamsph

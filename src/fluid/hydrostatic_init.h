@@ -1,0 +1,17 @@
+// Water at rest starts in hydrostatic equilibrium (no start-up shock), spec §2:
+// p = rho0 |g| (surface - y), rho from the inverse Tait EOS, m = rho dx^2.
+#pragma once
+#include <vector>
+
+#include "core/vec.h"
+#include "fluid/fluid_particles.h"
+#include "fluid/tait_eos.h"
+
+namespace slamsph {
+
+// Appends particles at `pts` (each owning volume dx^2) with hydrostatic state below the
+// free surface `surface`; ids continue from the current size.
+void append_hydrostatic_block(FluidParticles& f, const std::vector<Vec2>& pts, double dx,
+                              double surface, Vec2 gravity, const TaitEos& eos);
+
+}  // namespace slamsph
