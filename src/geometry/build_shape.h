@@ -4,14 +4,11 @@
 // tank → tank_walls(box as the inner box, layers; 0 → 4, open_top).
 #pragma once
 #include "geometry/particle_lattice.h"
+#include "geometry/shape_bounds.h"
 #include "io/case_config.h"
 
 namespace slamsph {
 
 ParticleLattice build_shape(const ShapeConfig& shape, double dx);  // throws std::invalid_argument
-
-// Axis-aligned bounding box of the particles' cells a shape produces (tank: including its
-// walls) — used to check a body lies inside the domain before building it.
-Box shape_bounds(const ShapeConfig& shape, double dx);
 
 }  // namespace slamsph

@@ -6,4 +6,5 @@
 #include "geometry/polar_lattice.h"
 #include "geometry/polygon_lattice.h"
 #include "geometry/remove_overlap.h"
+#include "geometry/shape_bounds.h"
 #include "geometry/tank_walls.h"
