@@ -1,0 +1,58 @@
+// Result plots with gnuplot: for each plot a script <name>.gp is written into the output
+// folder next to the data and run there (gnuplot, terminal pngcairo), producing
+// <name>.png. The .gp files reference the CSVs by relative name, so they can be edited and
+// rerun by hand (`cd out && gnuplot slamming_force.gp`).
+//
+// Kinds (output.plot in the case file):
+//  "cylinder_entry": forces.csv column "<body> Fy [N/m]" (p.body, or the first column
+//      ending in "Fy [N/m]") → slamming_force.png (F against t − t_contact in ms, second
+//      axis s/D) and slamming_coefficient.png (Cs against s/D), each with the
+//      Campbell–Weynberg, von Kármán and Wagner curves (reference_curves.h). Needs
+//      p.velocity and p.radius.
+//  "dam_break": probes.csv column "surge_front [m]" (or p.column) → surge_front.png,
+//      Z = (x − p.wall_x)/a against T = t sqrt(2g/a) with the Martin & Moyce and
+//      Koshizuka & Oka points. Needs p.dam_width.
+//  "plate": tip-displacement columns (header contains "tip", unit [m]; or p.column) of
+//      bodies.csv, else probes.csv → plate_tip.png in mm, with A sin(ωt) if
+//      p.plate_omega and p.plate_amplitude are set.
+//  "gate": tip-displacement columns as for "plate" → gate_tip.png in mm with the
+//      Antoci et al. (2007) experimental peaks marked.
+// The first CSV column is the time [s].
+//
+// Return codes: 0 success; 1 gnuplot not found; 2 missing file, column or parameter;
+// 3 gnuplot failed. `message` says what was written (with peak and error metrics) or
+// what went wrong.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace slamsph {
+
+struct PlotParams {
+  std::string column;               // override the column looked up by a kind ("" = default)
+  std::string body;                 // cylinder_entry: body whose force is plotted
+  double density = 1000.0;          // cylinder_entry: fluid density ρ [kg/m^3]
+  double velocity = 0.0;            // cylinder_entry: entry speed V [m/s]
+  double radius = 0.0;              // cylinder_entry: R [m]
+  double t_contact = 0.0;           // cylinder_entry: time of first contact [s]
+  double dam_width = 0.0;           // dam_break: initial column width a [m]
+  double gravity = 9.81;            // dam_break: |g| [m/s^2]
+  double wall_x = 0.0;              // dam_break: x of the wall the column rests against [m]
+  double plate_omega = 0.0;         // plate: reference angular frequency [rad/s] (0 = none)
+  double plate_amplitude = 0.0;     // plate: reference tip amplitude [m]
+  std::string gnuplot = "gnuplot";  // executable name (searched in PATH) or path
+};
+
+int plot_results(const std::string& out_dir, const std::string& kind, const PlotParams& p,
+                 std::string& message);
+
+// Generic: the given columns of <out_dir>/<csv_name> (all but the first if empty) against
+// the first column, into <out_dir>/<png_name> (script <png stem>.gp). Same return codes.
+int plot_csv_columns(const std::string& out_dir, const std::string& csv_name,
+                     const std::vector<std::string>& columns, const std::string& png_name,
+                     const std::string& gnuplot, std::string& message);
+
+// Full path of the gnuplot executable (name searched in PATH), or "" if not found.
+std::string find_gnuplot(const std::string& name = "gnuplot");
+
+}  // namespace slamsph

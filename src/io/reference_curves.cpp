@@ -1,0 +1,163 @@
+// Reference curves and metrics; sources in reference_curves.h and the validation README.
+#include "io/reference_curves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace slamsph {
+
+const char* slamming_theory_name(SlammingTheory th) {
+  switch (th) {
+    case SlammingTheory::CampbellWeynberg:
+      return "Campbell-Weynberg";
+    case SlammingTheory::VonKarman:
+      return "von Karman";
+    case SlammingTheory::Wagner:
+      return "Wagner";
+  }
+  return "?";
+}
+
+double slamming_coefficient(SlammingTheory th, double s_over_d) {
+  constexpr double pi = std::numbers::pi;
+  switch (th) {
+    case SlammingTheory::CampbellWeynberg:
+      return 5.15 / (1.0 + 19.0 * s_over_d) + 0.55 * s_over_d;
+    case SlammingTheory::VonKarman:
+      return std::max(0.0, pi * (1.0 - 2.0 * s_over_d));
+    case SlammingTheory::Wagner:
+      return 2.0 * pi;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double slamming_force(SlammingTheory th, double s_over_d, double density, double velocity,
+                      double radius) {
+  return slamming_coefficient(th, s_over_d) * density * velocity * velocity * radius;
+}
+
+FrontTable martin_moyce_1952() {
+  return {"Martin & Moyce 1952",
+          {0.41, 0.84, 1.19, 1.43, 1.63, 1.82, 1.97, 2.20, 2.32, 2.50, 2.64, 2.82, 2.96},
+          {1.11, 1.23, 1.44, 1.67, 1.89, 2.11, 2.33, 2.56, 2.78, 3.00, 3.22, 3.44, 3.67}};
+}
+
+FrontTable koshizuka_oka_1996() {
+  return {"Koshizuka & Oka 1996",
+          {0, 0.381, 0.769, 1.153, 1.537, 1.935, 2.323, 2.719, 3.096},
+          {1, 1.111, 1.252, 1.505, 1.892, 2.241, 2.615, 3.003, 3.624}};
+}
+
+double cantilever_omega(double youngs, double density, double poisson, double thickness,
+                        double free_length) {
+  const double k = 1.875 / free_length;
+  const double k2 = k * k;
+  return std::sqrt(youngs * thickness * thickness * k2 * k2 /
+                   (12.0 * density * (1.0 - poisson * poisson)));
+}
+
+double cantilever_tip_amplitude(double vf, double youngs, double density, double poisson,
+                                double omega) {
+  const double bulk = youngs / (3.0 * (1.0 - 2.0 * poisson));
+  return vf * std::sqrt(bulk / density) / omega;
+}
+
+GateExperiment antoci_2007_gate() {
+  return {};
+}
+
+Peak find_peak(const std::vector<double>& t, const std::vector<double>& v, bool absolute) {
+  if (t.size() != v.size()) throw std::invalid_argument("find_peak: t and v differ in size");
+  Peak p;
+  bool found = false;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (std::isnan(v[i])) continue;
+    const double key = absolute ? std::abs(v[i]) : v[i];
+    const double best = absolute ? std::abs(p.value) : p.value;
+    if (!found || key > best) {
+      p = {t[i], v[i], i};
+      found = true;
+    }
+  }
+  if (!found) throw std::invalid_argument("find_peak: empty or all-NaN series");
+  return p;
+}
+
+double relative_error(double simulated, double reference) {
+  return (simulated - reference) / std::abs(reference);
+}
+
+double interpolate(const std::vector<double>& t, const std::vector<double>& v, double tq) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (t.empty() || t.size() != v.size() || !(tq >= t.front()) || !(tq <= t.back())) return nan;
+  const auto it = std::lower_bound(t.begin(), t.end(), tq);
+  const std::size_t j = static_cast<std::size_t>(it - t.begin());
+  if (t[j] == tq) return v[j];
+  const std::size_t i = j - 1;  // j >= 1 because tq > t.front()
+  const double w = (tq - t[i]) / (t[j] - t[i]);
+  return v[i] + w * (v[j] - v[i]);
+}
+
+namespace {
+struct ErrorAccumulator {
+  double sum2 = 0.0;
+  SeriesError e;
+  void add(double at, double rel) {
+    sum2 += rel * rel;
+    if (e.samples == 0 || std::abs(rel) > e.max_abs) {
+      e.max_abs = std::abs(rel);
+      e.at = at;
+    }
+    ++e.samples;
+  }
+  SeriesError result() const {
+    SeriesError r = e;
+    if (r.samples == 0) {
+      r.rms = r.max_abs = r.at = std::numeric_limits<double>::quiet_NaN();
+    } else {
+      r.rms = std::sqrt(sum2 / static_cast<double>(r.samples));
+    }
+    return r;
+  }
+};
+}  // namespace
+
+SeriesError slamming_history_error(const std::vector<double>& t, const std::vector<double>& force,
+                                   SlammingTheory th, const SlammingCase& c, double s_lo,
+                                   double s_hi, int samples) {
+  if (!(c.velocity > 0.0) || !(c.radius > 0.0))
+    throw std::invalid_argument("slamming_history_error: velocity and radius must be > 0");
+  if (samples < 2) throw std::invalid_argument("slamming_history_error: samples < 2");
+  const double d = 2.0 * c.radius;
+  ErrorAccumulator acc;
+  for (int k = 0; k < samples; ++k) {
+    const double sd = s_lo + (s_hi - s_lo) * k / (samples - 1);
+    const double tq = c.t_contact + sd * d / c.velocity;
+    const double f = interpolate(t, force, tq);
+    if (std::isnan(f)) continue;
+    const double ref = slamming_force(th, sd, c.density, c.velocity, c.radius);
+    acc.add(sd, relative_error(f, ref));
+  }
+  return acc.result();
+}
+
+SeriesError front_error(const std::vector<double>& t, const std::vector<double>& front_x,
+                        double column_width, double gravity, const FrontTable& table,
+                        double T_max) {
+  if (!(column_width > 0.0) || !(gravity > 0.0))
+    throw std::invalid_argument("front_error: column width and gravity must be > 0");
+  const double scale = std::sqrt(2.0 * gravity / column_width);  // T = t * scale
+  ErrorAccumulator acc;
+  for (std::size_t k = 0; k < table.T.size(); ++k) {
+    if (table.T[k] > T_max) continue;
+    const double x = interpolate(t, front_x, table.T[k] / scale);
+    if (std::isnan(x)) continue;
+    acc.add(table.T[k], relative_error(x / column_width, table.Z[k]));
+  }
+  return acc.result();
+}
+
+}  // namespace slamsph

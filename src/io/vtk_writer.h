@@ -1,0 +1,80 @@
+// Particle output for ParaView: one VTK XML PolyData file (.vtp, ASCII) per particle set
+// and frame, plus a ParaView collection (fields.pvd) that indexes them by time and part.
+//
+// Layout: <out_dir>/vtk/<set>_<frame:05>.vtp and <out_dir>/fields.pvd. fields.pvd is
+// rewritten complete (via a temporary file and rename) at every end_frame(), so a run
+// that stops early still leaves a readable time series.
+//
+// File conventions (kept so that ParaView reads the files without plugins):
+//  - Points are 3D with z = 0; each particle is a VTK_VERTEX cell, so ParaView shows
+//    points without a Glyph filter.
+//  - Array names stay clean ("pressure"); the unit is an extra attribute unit="Pa" on the
+//    <DataArray> element (readers ignore unknown attributes) and is repeated in an XML
+//    comment at the top of the file.
+//  - 2-component fields (vectors) are written with 3 components (z = 0) so that ParaView
+//    treats them as vectors (Glyph, Stream Tracer). Other component counts are written
+//    as given: 4 = full 2x2 tensor row-major (xx, xy, yx, yy), 3 = symmetric tensor
+//    (xx, yy, xy). Component names, when given, become ComponentName<i> attributes.
+//  - The simulated time is stored as FieldData "TimeValue" (ParaView's convention).
+//  - Numbers are written in shortest round-trip form (std::to_chars), so values read back
+//    exactly. Non-finite values are written as "nan"/"inf" (ParaView's ASCII reader may
+//    reject them; a diverged run's last frame is for inspection only).
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace slamsph {
+
+struct PointField {
+  std::string name;                          // array name, no unit: "pressure"
+  std::string unit;                          // SI unit text: "Pa", "m/s", "-" for dimensionless
+  int components = 1;                        // 1 scalar, 2 vector, 3 symmetric tensor, 4 tensor
+  std::vector<double> values;                // size n * components, particle-major
+  std::vector<std::string> component_names;  // optional, size components: {"xx", "yy", "xy"}
+};
+
+class VtkSeries {
+ public:
+  // Creates <out_dir>/vtk. Throws std::runtime_error if it cannot.
+  explicit VtkSeries(std::string out_dir);
+  // Closes an unfinished frame (end_frame) so the .pvd lists everything written.
+  ~VtkSeries();
+  VtkSeries(const VtkSeries&) = delete;
+  VtkSeries& operator=(const VtkSeries&) = delete;
+
+  // Writes one particle set of the current frame. A set name may appear once per frame;
+  // its `part` index in the .pvd is the order of first appearance over the run. Throws
+  // std::invalid_argument for inconsistent sizes or a bad set name, std::runtime_error on
+  // I/O failure.
+  void write(double time, const std::string& set_name, const std::vector<Vec2>& x,
+             const std::vector<PointField>& fields);
+  // Finishes the frame: rewrites fields.pvd and advances the frame counter. A frame
+  // without any write() is not counted.
+  void end_frame();
+
+  int frames_written() const { return frame_; }
+  const std::string& pvd_path() const { return pvd_path_; }
+  // Path of a set's file for a given frame: <out_dir>/vtk/<set>_<frame:05>.vtp.
+  std::string vtp_path(const std::string& set_name, int frame) const;
+
+ private:
+  struct Entry {
+    double time;
+    int part;
+    std::string file;  // relative to out_dir
+  };
+  void write_pvd() const;
+  int part_of(const std::string& set_name);
+
+  std::string out_dir_;
+  std::string pvd_path_;
+  int frame_ = 0;
+  std::vector<std::string> parts_;  // set names in order of first appearance
+  std::vector<std::string> sets_this_frame_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace slamsph
