@@ -16,7 +16,7 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N] [--quiet]\n"
+    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N] [--quiet]\n                [--no-output]\n"
     "  slamsph check CASE.toml      validate a case file and print its particle counts\n"
     "  slamsph plot DIR             (re)draw the PNG plots of a finished run in DIR\n"
     "  slamsph --version | --help\n";
@@ -56,6 +56,7 @@ int run_command(int argc, char** argv) {
         throw InputError("command line: --max-steps: expected a non-negative integer");
       opt.max_steps = static_cast<long>(n);
     } else if (a == "--quiet") opt.quiet = true;
+    else if (a == "--no-output") opt.write_output = false;
     else throw InputError("command line: unknown option '" + a + "'\n" + kUsage);
   }
   if (cmd == "plot") return plot_command(path);
@@ -70,7 +71,7 @@ int run_command(int argc, char** argv) {
   if (opt.out_dir.empty()) opt.out_dir = "results";
   Simulation sim(std::move(cfg), opt);
   const int code = sim.run();
-  if (code == 0 && !sim.config().output.plot.empty()) {
+  if (code == 0 && opt.write_output && !sim.config().output.plot.empty()) {
     const int pc = plot_command(opt.out_dir);
     if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
   }

@@ -234,8 +234,10 @@ int Simulation::run() {
   }
   if (out) summary.write_file(dir + "/summary.json");
   if (!opt_.quiet) {
-    std::fprintf(stderr, "%s: %ld fluid steps to t = %.6g s in %.2f s (%.3g particle-steps/s, %d threads)\n",
-                 cfg_.name.c_str(), steps_, time_, wall, ps, exec_.threads());
+    std::fprintf(stderr,
+                 "%s: fluid particles: %zu, %ld fluid steps to t = %.6g s in %.2f s (%.4g "
+                 "particle-steps/s, %d threads)\n",
+                 cfg_.name.c_str(), fluid_.size(), steps_, time_, wall, ps, exec_.threads());
   }
   if (code != 0) {
     std::fprintf(stderr, "error: run diverged: %s\n", failure.c_str());
