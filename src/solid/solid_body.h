@@ -1,6 +1,15 @@
 // A solid body: tank walls, rigid bodies and elastic structures share this storage, so
 // the fluid sees all of them through one contact path (spec §4). Elastic bodies are
 // total-Lagrangian (spec §3): X is the reference configuration, fixed after setup.
+//
+// Elastic state and reference operators (spec §3, filled by setup_body in
+// solid/body_dynamics.h):
+//  - `pairs` is the symmetric pair list the force sum runs over (j in pairs(i) <=> i in
+//    pairs(j)); `pair_reverse[k]` is the position of pair (j, i) in j's list.
+//  - `grad0[k]` for pair k = (i, j) is the corrected reference gradient weight
+//    g_ij = V0_j B_i ∇0W_ij, zero when j is not in i's own gradient set (TL-SFPM: j not in
+//    S_i). Every gradient of a field is then ∇0 f_i = Σ_k (f_j - f_i) ⊗ g_ij and
+//    F_i = Σ_k (x_j - x_i) ⊗ g_ij (solid/deformation_gradient.h).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -9,6 +18,7 @@
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/vec.h"
+#include "solid/materials/st_venant_kirchhoff.h"
 
 namespace slamsph {
 
@@ -17,39 +27,84 @@ enum class SolidScheme { TlSfpm, TlSph };
 
 // Rigid-body state (free or prescribed motion), about the centre of mass.
 struct RigidState {
-  double mass = 0.0;      // [kg/m]
-  double inertia = 0.0;   // about the centre of mass [kg m^2/m]
-  Vec2 com;               // centre of mass [m]
-  Vec2 com0;              // initial centre of mass [m]
-  double angle = 0.0;     // rotation from the reference [rad]
-  Vec2 vel;               // [m/s]
-  double omega = 0.0;     // [rad/s]
-  Vec2 acc;               // [m/s^2]
-  double alpha = 0.0;     // [rad/s^2]
+  double mass = 0.0;     // [kg/m]
+  double inertia = 0.0;  // about the centre of mass [kg m^2/m]
+  Vec2 com;              // centre of mass [m]
+  Vec2 com0;             // initial centre of mass [m]
+  double angle = 0.0;    // rotation from the reference [rad]
+  Vec2 vel;              // [m/s]
+  double omega = 0.0;    // [rad/s]
+  Vec2 acc;              // [m/s^2]
+  double alpha = 0.0;    // [rad/s^2]
   bool allow_rotation = true;
+};
+
+// One row of a prescribed-velocity table (rigid_prescribed), linear in t, held at ends.
+struct PrescribedVelocity {
+  double t = 0.0;  // [s]
+  Vec2 v;          // [m/s]
+};
+
+// Material of an elastic body, resolved at setup (spec §3).
+struct SolidMaterial {
+  std::string model = "svk";
+  double density = 0.0;         // [kg/m^3]
+  double youngs_modulus = 0.0;  // [Pa]
+  double poisson_ratio = 0.0;   // [-]
+  SvkParameters svk;            // Lamé parameters [Pa]
+  double av_alpha = 1.0;        // Monaghan artificial viscosity α [-]
+  double av_beta = 0.0;         // Monaghan artificial viscosity β [-]
+  double hourglass = 0.0;       // hourglass control coefficient [-] (0 = off)
+  double sound_speed = 0.0;     // P-wave speed sqrt(E(1-ν)/(ρ(1+ν)(1-2ν))) [m/s]
 };
 
 struct SolidBody {
   std::string name;
   BodyKind kind = BodyKind::RigidFixed;
   SolidScheme scheme = SolidScheme::TlSfpm;
-  double dx = 0.0;       // particle spacing [m]
-  Kernel kernel;         // body's own kernel (h = h_over_dx * dx)
+  double dx = 0.0;  // particle spacing [m]
+  Kernel kernel;    // body's own kernel (h = h_over_dx * dx)
   bool feels_gravity = true;
 
   // Per particle.
-  std::vector<Vec2> X;        // reference position [m]
-  std::vector<Vec2> x;        // current position [m]
-  std::vector<Vec2> v;        // velocity [m/s]
-  std::vector<Vec2> a;        // acceleration [m/s^2]
-  std::vector<double> m;      // mass [kg/m]
-  std::vector<double> V0;     // reference volume [m^2]
-  std::vector<double> rho0;   // reference density [kg/m^3]
-  std::vector<Vec2> f_fluid;  // fluid force on the particle, held over sub-steps [N/m]
+  std::vector<Vec2> X;                // reference position [m]
+  std::vector<Vec2> x;                // current position [m]
+  std::vector<Vec2> v;                // velocity [m/s]
+  std::vector<Vec2> a;                // acceleration [m/s^2]
+  std::vector<double> m;              // mass [kg/m]
+  std::vector<double> V0;             // reference volume [m^2]
+  std::vector<double> rho0;           // reference density [kg/m^3]
+  std::vector<Vec2> f_fluid;          // fluid force on the particle, held over sub-steps [N/m]
   std::vector<std::uint8_t> clamped;  // 1 = held fixed
-  std::vector<int> layer;     // ring layer through the thickness (-1 if none)
+  std::vector<int> layer;             // ring layer through the thickness (-1 if none)
 
-  RigidState rigid;  // used by rigid kinds
+  RigidState rigid;                        // used by rigid kinds
+  std::vector<PrescribedVelocity> motion;  // rigid_prescribed velocity table
+
+  // Elastic state (empty for rigid kinds).
+  std::vector<Mat2> F;      // deformation gradient [-]
+  std::vector<Mat2> P;      // first Piola–Kirchhoff stress [Pa]
+  std::vector<Mat2> B;      // correction matrix (Eq. 11; TL-SFPM: the FPM M_i^-1) [m^-2 m^2]
+  std::vector<double> e;    // specific internal energy [J/kg]
+  std::vector<Vec2> f_int;  // internal (stress + viscosity + hourglass) force [N/m]
+  std::vector<Vec2> f_av;   // its artificial-viscosity part [N/m]
+  std::vector<Vec2> f_hg;   // its hourglass-control part [N/m]
+
+  // Reference neighbour structure (built once from X).
+  NeighbourList fpm_sets;                   // TL-SFPM selected sets S_i (empty for TlSph)
+  NeighbourList pairs;                      // symmetric pair list for the force sum
+  std::vector<std::uint32_t> pair_reverse;  // index of (j, i) for pair k = (i, j)
+  std::vector<Vec2> grad0;  // g_ij = V0_j B_i ∇0W_ij per pair (0 if j not in S_i) [1/m]
+
+  SolidMaterial material;  // elastic bodies
+  double cfl = 0.5;        // solid CFL number (spec §3), from NumericsConfig::solid_cfl
+  int last_substeps = 0;   // sub-steps taken by the last advance_body call
+
+  // Energy accumulators since setup [J/m].
+  double dissipated = 0.0;      // work removed by artificial viscosity
+  double hourglass_work = 0.0;  // work done against the hourglass control (its potential
+                                // is reported by body_energies; this is a cross-check)
+  double external_work = 0.0;   // work done by gravity and the fluid force
 
   std::size_t size() const { return X.size(); }
   bool is_elastic() const { return kind == BodyKind::Elastic; }

@@ -1,0 +1,44 @@
+// Output fields of a solid body (declared in solid/body_dynamics.h). Equivalent strain is
+// the von Mises equivalent of the Green–Lagrange strain (plane strain, E_zz = 0):
+// sqrt(2/3 dev(E):dev(E)). Cauchy stress and pressure include the plane-strain σ_zz of the
+// material law (solid/materials/st_venant_kirchhoff.h).
+#include "solid/body_dynamics.h"
+#include "solid/materials/st_venant_kirchhoff.h"
+
+namespace slamsph {
+
+std::vector<SolidField> solid_output_fields(const SolidBody& body) {
+  const std::size_t n = body.size();
+  std::vector<SolidField> out;
+  SolidField disp{"displacement", "m", 2, {}}, vel{"velocity", "m/s", 2, {}};
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 u = body.x[i] - body.X[i];
+    disp.values.insert(disp.values.end(), {u.x, u.y});
+    vel.values.insert(vel.values.end(), {body.v[i].x, body.v[i].y});
+  }
+  out.push_back(std::move(disp));
+  out.push_back(std::move(vel));
+  if (!body.is_elastic() || body.F.size() != n) return out;
+
+  SolidField F{"deformation_gradient", "-", 4, {}}, E{"green_lagrange_strain", "-", 3, {}};
+  SolidField eq{"equivalent_strain", "-", 1, {}}, P{"pk1_stress", "Pa", 4, {}};
+  SolidField sig{"cauchy_stress", "Pa", 3, {}}, vm{"von_mises_stress", "Pa", 1, {}};
+  SolidField pr{"pressure", "Pa", 1, {}};
+  for (std::size_t i = 0; i < n; ++i) {
+    const Mat2& f = body.F[i];
+    const Mat2& p = body.P[i];
+    const Mat2 e = green_lagrange(f);
+    const CauchyStress s = cauchy_from_pk1(p, f, svk_cauchy_zz(body.material.svk, f));
+    F.values.insert(F.values.end(), {f.xx, f.xy, f.yx, f.yy});
+    E.values.insert(E.values.end(), {e.xx, e.yy, e.xy});
+    eq.values.push_back(equivalent_strain(e));
+    P.values.insert(P.values.end(), {p.xx, p.xy, p.yx, p.yy});
+    sig.values.insert(sig.values.end(), {s.xx, s.yy, s.xy});
+    vm.values.push_back(von_mises_stress(s));
+    pr.values.push_back(pressure(s));
+  }
+  for (SolidField* f : {&F, &E, &eq, &P, &sig, &vm, &pr}) out.push_back(std::move(*f));
+  return out;
+}
+
+}  // namespace slamsph
