@@ -30,6 +30,20 @@ std::string num(double v) {
   return buf;
 }
 
+// Unsigned percentage for RMS and max |error|.
+std::string apct(double rel) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * rel);
+  return buf;
+}
+
+// Compact number for messages.
+std::string snum(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.5g", v);
+  return buf;
+}
+
 std::string pct(double rel) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%+.1f%%", 100.0 * rel);
@@ -207,19 +221,19 @@ int plot_cylinder_entry(const std::string& out_dir, const PlotParams& p, const s
   // Metrics for the message and the plot title.
   const Peak pk = find_peak(time, force);
   const double pk_sd = p.velocity * (pk.time - p.t_contact) / d;
-  std::string metrics = "peak " + num(pk.value) +
-                        " N/m at t - t0 = " + num(1e3 * (pk.time - p.t_contact)) + " ms (s/D " +
-                        num(pk_sd) + ")";
+  std::string metrics = "peak " + snum(pk.value) +
+                        " N/m at t - t0 = " + snum(1e3 * (pk.time - p.t_contact)) + " ms (s/D " +
+                        snum(pk_sd) + ")";
   std::string hist;
   for (SlammingTheory th :
        {SlammingTheory::CampbellWeynberg, SlammingTheory::VonKarman, SlammingTheory::Wagner}) {
     const double ref0 = slamming_force(th, 0.0, p.density, p.velocity, p.radius);
-    metrics += std::string("; vs ") + slamming_theory_name(th) + " F(0) " + num(ref0) + ": " +
+    metrics += std::string("; vs ") + slamming_theory_name(th) + " F(0) " + snum(ref0) + ": " +
                pct(relative_error(pk.value, ref0));
     if (th == SlammingTheory::Wagner) continue;
     const SeriesError e = slamming_history_error(time, force, th, sc);
     hist += std::string(hist.empty() ? "" : "; ") + slamming_theory_name(th) + " rms " +
-            (e.samples ? pct(e.rms) : "n/a") + " max " + (e.samples ? pct(e.max_abs) : "n/a");
+            (e.samples ? apct(e.rms) : "n/a") + " max " + (e.samples ? apct(e.max_abs) : "n/a");
   }
   metrics += "; history s/D 0.05-0.3: " + hist;
 
@@ -237,6 +251,7 @@ int plot_cylinder_entry(const std::string& out_dir, const PlotParams& p, const s
   s += "set xlabel 'time since contact t - t0 [ms]'\nset ylabel 'vertical force Fy [N/m]'\n";
   s += "set x2label 'submergence s/D [-]'\nset x2tics\nset xtics nomirror\n";
   s += "set link x2 via V*x*1e-3/D inverse x*D/V*1e3\n";
+  s += "set format x2 '%.3g'\n";
   s += "set autoscale xfix\n";
   s += "set label 1 sprintf('peak %.0f N/m', " + num(pk.value) + ") at " +
        num(1e3 * (pk.time - p.t_contact)) + "," + num(pk.value) +
@@ -297,8 +312,8 @@ int plot_dam_break(const std::string& out_dir, const PlotParams& p, const std::s
   for (const FrontTable* tab : {&mm, &ko}) {
     const SeriesError e = front_error(t.columns[0], x, p.dam_width, p.gravity, *tab, 3.0);
     metrics += std::string(metrics.empty() ? "" : "; ") + tab->name + " (T <= 3, " +
-               std::to_string(e.samples) + " points): rms " + (e.samples ? pct(e.rms) : "n/a") +
-               " max " + (e.samples ? pct(e.max_abs) : "n/a");
+               std::to_string(e.samples) + " points): rms " + (e.samples ? apct(e.rms) : "n/a") +
+               " max " + (e.samples ? apct(e.max_abs) : "n/a");
   }
   std::string s = preamble("surge_front.png");
   s += "a = " + num(p.dam_width) + "\ng = " + num(p.gravity) + "\nx0 = " + num(p.wall_x) + "\n";
@@ -351,9 +366,9 @@ int plot_plate(const std::string& out_dir, const PlotParams& p, const std::strin
   if (rc != kOk) return rc;
   const Peak pk = find_peak(t.columns[0], t.columns[static_cast<std::size_t>(cols[0])], true);
   message = "wrote plate_tip.png from " + csv + "; " +
-            t.headers[static_cast<std::size_t>(cols[0])] + " largest |value| " + num(pk.value) +
-            " m at " + num(pk.time) + " s";
-  if (ref) message += " (theory amplitude " + num(p.plate_amplitude) + " m)";
+            t.headers[static_cast<std::size_t>(cols[0])] + " largest |value| " + snum(pk.value) +
+            " m at " + snum(pk.time) + " s";
+  if (ref) message += " (theory amplitude " + snum(p.plate_amplitude) + " m)";
   return kOk;
 }
 
@@ -371,20 +386,21 @@ int plot_gate(const std::string& out_dir, const PlotParams& p, const std::string
        "," + num(0.5e3 * (ex.peak_dy_min + ex.peak_dy_max)) + "," + num(tw) + "," +
        num(0.5e3 * (ex.peak_dy_max - ex.peak_dy_min)) + "\nEOD\n";
   s += "set title 'Dam break through an elastic gate: tip displacement'\n";
+  s += "set key below\nset offsets 0, 0, 5, 5\n";
   s += "set xlabel 'time [s]'\nset ylabel 'tip displacement [mm]'\nset autoscale xfix\n";
   s += "plot " + tip_plot_lines(csv, t, cols) + ", \\\n";
   s += "     $EXP using 1:2:3:4 with xyerrorbars pt 7 ps 1.5 lc rgb 'black' "
-       "title 'Antoci et al. 2007 experiment: peaks dx ~40 mm, dy ~12-14 mm (approx.)'\n";
+       "title 'Antoci et al. 2007 experiment, approx. peaks (dx ~40 mm, dy ~12-14 mm)'\n";
   const int rc = run_script(out_dir, "gate_tip", s, gnuplot, message);
   if (rc != kOk) return rc;
   message = "wrote gate_tip.png from " + csv;
   for (int c : cols) {
     const Peak pk = find_peak(t.columns[0], t.columns[static_cast<std::size_t>(c)], true);
-    message += "; " + t.headers[static_cast<std::size_t>(c)] + " peak " + num(pk.value) + " m at " +
-               num(pk.time) + " s";
+    message += "; " + t.headers[static_cast<std::size_t>(c)] + " peak " + snum(pk.value) +
+               " m at " + snum(pk.time) + " s";
   }
-  message += " (experiment: dx " + num(ex.peak_dx) + " m at " + num(ex.t_peak_min) + "-" +
-             num(ex.t_peak_max) + " s, dy " + num(ex.peak_dy_min) + "-" + num(ex.peak_dy_max) +
+  message += " (experiment: dx " + snum(ex.peak_dx) + " m at " + snum(ex.t_peak_min) + "-" +
+             snum(ex.t_peak_max) + " s, dy " + snum(ex.peak_dy_min) + "-" + snum(ex.peak_dy_max) +
              " m)";
   return kOk;
 }

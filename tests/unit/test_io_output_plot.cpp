@@ -1,0 +1,140 @@
+// plot_results / plot_csv_columns: PNGs with a valid signature next to their .gp scripts;
+// clear non-zero returns for a missing gnuplot, file or column.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "io/csv_writer.h"
+#include "io/plot.h"
+#include "io/reference_curves.h"
+
+namespace slamsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(testing::TempDir()) / ("slamsph_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+bool is_png(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  char sig[8] = {};
+  f.read(sig, 8);
+  const unsigned char want[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  return f.gcount() == 8 && std::equal(sig, sig + 8, reinterpret_cast<const char*>(want));
+}
+
+#define SKIP_WITHOUT_GNUPLOT() \
+  if (find_gnuplot().empty()) GTEST_SKIP() << "gnuplot not installed"
+
+// forces.csv for a cylinder (V 2.33, R 0.1) following Campbell–Weynberg from t = 1 ms.
+void write_forces(const fs::path& dir) {
+  CsvWriter w((dir / "forces.csv").string(),
+              {"time [s]", "tank Fx [N/m]", "tank Fy [N/m]", "cylinder Fx [N/m]",
+               "cylinder Fy [N/m]", "cylinder Fy_pressure [N/m]"});
+  for (int i = 0; i <= 300; ++i) {
+    const double t = 1e-4 * i;
+    const double sd = 2.33 * (t - 1e-3) / 0.2;
+    const double f =
+        sd < 0 ? 0.0 : slamming_force(SlammingTheory::CampbellWeynberg, sd, 1000, 2.33, 0.1);
+    w.row({t, 0.0, -f, 0.01 * std::sin(1e3 * t), f, f});
+  }
+}
+
+TEST(IoOutputPlot, CylinderEntryWritesPngs) {
+  SKIP_WITHOUT_GNUPLOT();
+  const fs::path dir = fresh_dir("plot_cyl");
+  write_forces(dir);
+  PlotParams p;
+  p.body = "cylinder";
+  p.velocity = 2.33;
+  p.radius = 0.1;
+  p.t_contact = 1e-3;
+  std::string msg;
+  ASSERT_EQ(plot_results(dir.string(), "cylinder_entry", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "slamming_force.png"));
+  EXPECT_TRUE(is_png(dir / "slamming_coefficient.png"));
+  EXPECT_TRUE(fs::exists(dir / "slamming_force.gp"));
+  EXPECT_FALSE(fs::exists(dir / "slamming_force.gp.log"));
+  // The synthetic force is Campbell–Weynberg itself: peak 2796 N/m, error +0.0 %.
+  EXPECT_NE(msg.find("peak 2795.9 N/m at t - t0 = 0 ms"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Campbell-Weynberg F(0) 2795.9: +0.0%"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Campbell-Weynberg rms 0.0% max 0.0%"), std::string::npos) << msg;
+}
+
+TEST(IoOutputPlot, MissingColumnFileAndGnuplotAreReported) {
+  const fs::path dir = fresh_dir("plot_missing");
+  write_forces(dir);
+  PlotParams p;
+  p.velocity = 2.33;
+  p.radius = 0.1;
+  std::string msg;
+  p.gnuplot = "/nonexistent/gnuplot";
+  EXPECT_EQ(plot_results(dir.string(), "cylinder_entry", p, msg), 1);
+  EXPECT_NE(msg.find("not found"), std::string::npos) << msg;
+
+  SKIP_WITHOUT_GNUPLOT();
+  p.gnuplot = "gnuplot";
+  p.body = "wedge";
+  EXPECT_EQ(plot_results(dir.string(), "cylinder_entry", p, msg), 2);
+  EXPECT_NE(msg.find("\"wedge Fy [N/m]\""), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cylinder Fy [N/m]"), std::string::npos) << msg;  // lists columns
+
+  p.dam_width = 0.146;
+  EXPECT_EQ(plot_results(dir.string(), "dam_break", p, msg), 2);
+  EXPECT_NE(msg.find("probes.csv does not exist"), std::string::npos) << msg;
+  EXPECT_EQ(plot_results(dir.string(), "sloshing", p, msg), 2);
+  EXPECT_EQ(plot_csv_columns(dir.string(), "forces.csv", {"nope [m]"}, "x.png", "gnuplot", msg), 2);
+  EXPECT_FALSE(fs::exists(dir / "slamming_force.png"));
+}
+
+TEST(IoOutputPlot, DamBreakPlateGateAndGeneric) {
+  SKIP_WITHOUT_GNUPLOT();
+  const fs::path dir = fresh_dir("plot_other");
+  const double a = 0.146, g = 9.81;
+  {
+    CsvWriter w((dir / "probes.csv").string(), {"time [s]", "p1 [Pa]", "surge_front [m]"});
+    const FrontTable mm = martin_moyce_1952();
+    for (std::size_t i = 0; i < mm.T.size(); ++i)
+      w.row({mm.T[i] / std::sqrt(2 * g / a), 1000.0, mm.Z[i] * a});
+  }
+  {
+    CsvWriter w((dir / "bodies.csv").string(),
+                {"time [s]", "plate tip_dx [m]", "plate tip_dy [m]", "plate ke [J/m]"});
+    for (int i = 0; i <= 200; ++i) {
+      const double t = 0.002 * i;
+      w.row({t, 0.001 * (1 - std::cos(24.73 * t)), 0.023 * std::sin(24.73 * t), 1.0});
+    }
+  }
+  PlotParams p;
+  p.dam_width = a;
+  std::string msg;
+  ASSERT_EQ(plot_results(dir.string(), "dam_break", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "surge_front.png"));
+  EXPECT_NE(msg.find("Martin & Moyce 1952 (T <= 3, 13 points): rms 0.0%"), std::string::npos)
+      << msg;
+
+  p.plate_omega = 24.73;
+  p.plate_amplitude = 0.023;
+  ASSERT_EQ(plot_results(dir.string(), "plate", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "plate_tip.png"));
+  ASSERT_EQ(plot_results(dir.string(), "gate", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "gate_tip.png"));
+  EXPECT_NE(msg.find("plate tip_dy [m] peak"), std::string::npos) << msg;
+
+  ASSERT_EQ(plot_csv_columns(dir.string(), "bodies.csv", {"plate ke [J/m]"}, "energy.png",
+                             "gnuplot", msg),
+            0)
+      << msg;
+  EXPECT_TRUE(is_png(dir / "energy.png"));
+  EXPECT_TRUE(fs::exists(dir / "energy.gp"));
+}
+
+}  // namespace
+}  // namespace slamsph
