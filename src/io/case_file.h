@@ -1,0 +1,25 @@
+// Case files (schema_version 1, TOML, SI units) → CaseConfig. Parsing fills every default
+// and validates every value before anything is computed; any problem is one
+// slamsph::InputError "<file>:<line>: <key path>: <what is wrong>; expected <what>[, got
+// <value>]" (the CLI maps it to exit code 2). docs/case_format.md documents every key.
+#pragma once
+#include <string>
+
+#include "io/case_config.h"
+
+namespace slamsph {
+
+inline constexpr int kCaseSchemaVersion = 1;
+
+// Reads, parses, fills defaults and validates `path`. Throws InputError.
+CaseConfig load_case(const std::string& path);
+
+// Same, for a case held in memory; `source_name` names it in messages.
+CaseConfig parse_case_string(const std::string& text, const std::string& source_name);
+
+// The case as TOML with every default filled in (written as case.resolved.toml beside the
+// results). parse_case_string(resolved_case_toml(c), s) equals c (except source_path);
+// materials come back sorted by name.
+std::string resolved_case_toml(const CaseConfig& config);
+
+}  // namespace slamsph

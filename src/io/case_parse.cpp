@@ -1,0 +1,538 @@
+// Case-file parser (schema_version 1): TOML tables → CaseConfig, defaults filled, every
+// value checked where it is read, cross-references (materials, bodies, domain, tank)
+// checked once everything is read. docs/case_format.md is the user-facing description.
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "geometry/shape_bounds.h"
+#include "io/case_file.h"
+#include "io/case_reader.h"
+
+namespace slamsph {
+
+using case_detail::fail;
+using case_detail::format_double;
+using case_detail::Reader;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+const std::vector<std::string> kKernels{"wendland_c2", "cubic_spline"};
+const std::vector<std::string> kKinds{"elastic", "rigid_fixed", "rigid_prescribed", "rigid_free"};
+const std::vector<std::string> kSchemes{"tl_sfpm", "tlsph"};
+const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
+const std::vector<std::string> kProbeKinds{"pressure", "surge_front", "water_height",
+                                           "body_pressure"};
+const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
+const std::vector<std::string> kProfiles{"", "cantilever_mode"};
+const std::vector<std::string> kModels{"svk"};
+
+// Value range of a number key. An open bound excludes the value itself.
+struct Rule {
+  double lo = -kInf, hi = kInf;
+  bool lo_open = false, hi_open = false;
+  std::string expected;
+};
+Rule positive(const std::string& e) {
+  return {0.0, kInf, true, false, e};
+}
+Rule non_negative(const std::string& e) {
+  return {0.0, kInf, false, false, e};
+}
+Rule any(const std::string& e) {
+  return {-kInf, kInf, false, false, e};
+}
+
+std::string pretty(double v) {
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15)
+    return std::to_string(static_cast<long long>(v));
+  return format_double(v);
+}
+
+std::string rule_text(const Rule& r) {
+  if (r.hi == kInf) return std::string("must be ") + (r.lo_open ? "> " : ">= ") + pretty(r.lo);
+  if (r.lo == -kInf) return std::string("must be ") + (r.hi_open ? "< " : "<= ") + pretty(r.hi);
+  return std::string("must be in ") + (r.lo_open ? "(" : "[") + pretty(r.lo) + ", " + pretty(r.hi) +
+         (r.hi_open ? ")" : "]");
+}
+
+bool rule_ok(const Rule& r, double v) {
+  const bool lo = r.lo_open ? v > r.lo : v >= r.lo;
+  const bool hi = r.hi_open ? v < r.hi : v <= r.hi;
+  return lo && hi;
+}
+
+// Number with a default (`def` nullopt: required).
+double num(const Reader& r, std::string_view key, const Rule& rule,
+           std::optional<double> def = std::nullopt) {
+  std::optional<double> v = r.number(key, rule.expected);
+  if (!v) {
+    if (!def) r.missing(key, rule.expected);
+    return *def;
+  }
+  r.check(rule_ok(rule, *v), key, rule_text(rule), rule.expected, *v);
+  return *v;
+}
+
+std::string vec_text(Vec2 v) {
+  return "[" + pretty(v.x) + ", " + pretty(v.y) + "]";
+}
+
+Vec2 vec(const Reader& r, std::string_view key, const std::string& expected,
+         std::optional<Vec2> def = std::nullopt) {
+  std::optional<Vec2> v = r.vec2(key, expected);
+  if (!v) {
+    if (!def) r.missing(key, "a 2-element array [x, y] of " + expected);
+    return *def;
+  }
+  return *v;
+}
+
+// min/max keys of a table; max must exceed min in both directions.
+Box read_box(const Reader& r) {
+  const Vec2 mn = vec(r, "min", "coordinates in m");
+  const Vec2 mx = vec(r, "max", "coordinates in m");
+  if (!(mn.x < mx.x && mn.y < mx.y))
+    r.bad("max", "must exceed min in x and y (min = " + vec_text(mn) + ")", "a box with min < max",
+          vec_text(mx));
+  return {mn, mx};
+}
+
+bool box_inside(const Box& in, const Box& out) {
+  // Tolerance for coordinates written as multiples of dx in decimal.
+  const double tol = 1e-9 * std::max({1.0, std::abs(out.min.x), std::abs(out.max.x),
+                                      std::abs(out.min.y), std::abs(out.max.y)});
+  return in.min.x >= out.min.x - tol && in.min.y >= out.min.y - tol &&
+         in.max.x <= out.max.x + tol && in.max.y <= out.max.y + tol;
+}
+std::string box_text(const Box& b) {
+  return "{min = " + vec_text(b.min) + ", max = " + vec_text(b.max) + "}";
+}
+
+NumericsConfig parse_numerics(const Reader& root) {
+  auto r = root.table("numerics", "a [numerics] table");
+  if (!r) root.missing("numerics", "a [numerics] table with dx, end_time and [numerics.domain]");
+  r->allow({"dx", "h_over_dx", "kernel", "cfl", "solid_cfl", "end_time", "gravity",
+            "neighbour_skin", "dual_time_stepping", "dt_floor", "domain"});
+  NumericsConfig n;
+  n.dx = num(*r, "dx", positive("a positive length in m"));
+  n.h_over_dx = num(*r, "h_over_dx", {1.0, 3.0, false, false, "a ratio h/dx in [1, 3]"}, 1.3);
+  n.kernel = kernel_type_from_name(r->choice("kernel", kKernels).value_or("wendland_c2"));
+  n.cfl = num(*r, "cfl", {0.0, 1.0, true, false, "a CFL number in (0, 1]"}, 0.25);
+  n.solid_cfl = num(*r, "solid_cfl", {0.0, 1.0, true, false, "a CFL number in (0, 1]"}, 0.5);
+  n.end_time = num(*r, "end_time", positive("a positive time in s"));
+  n.gravity = vec(*r, "gravity", "accelerations in m/s^2", Vec2{0.0, -9.81});
+  n.neighbour_skin =
+      num(*r, "neighbour_skin",
+          {0.0, 1.0, false, false, "a fraction of the kernel support in [0, 1]"}, 0.1);
+  n.dual_time_stepping = r->boolean("dual_time_stepping").value_or(true);
+  n.dt_floor = num(*r, "dt_floor", positive("a positive time in s"), 1e-9);
+  auto d = r->table("domain", "a table [numerics.domain] with min and max");
+  if (!d) r->missing("domain", "a [numerics.domain] table with min = [x, y] and max = [x, y] in m");
+  d->allow({"min", "max"});
+  n.domain = read_box(*d);
+  return n;
+}
+
+FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector<Reader>& blocks) {
+  FluidConfig f;
+  auto r = root.table("fluid", "a [fluid] table");
+  if (!r) return f;
+  r->allow({"density", "sound_speed", "gamma", "limiter_omega", "viscosity", "block"});
+  f.density = num(*r, "density", positive("a positive density in kg/m^3"), 1000.0);
+  f.sound_speed = num(*r, "sound_speed", positive("a positive sound speed in m/s"));
+  f.gamma = num(*r, "gamma", {1.0, kInf, false, false, "a Tait exponent >= 1"}, 7.0);
+  f.limiter_omega = num(*r, "limiter_omega", non_negative("a limiter factor >= 0"), 3.0);
+  f.viscosity = num(*r, "viscosity", non_negative("a kinematic viscosity >= 0 in m^2/s"), 0.0);
+  blocks = r->table_array("block", "[[fluid.block]] tables with min and max");
+  for (const Reader& b : blocks) {
+    b.allow({"min", "max", "surface"});
+    FluidBlockConfig fb;
+    fb.box = read_box(b);
+    if (!box_inside(fb.box, n.domain))
+      b.bad("max", "fluid block " + box_text(fb.box) + " lies outside the domain",
+            "a block inside numerics.domain " + box_text(n.domain));
+    fb.surface =
+        num(b, "surface",
+            {fb.box.max.y, kInf, false, false,
+             "a free-surface height in m at or above the block top " + pretty(fb.box.max.y)},
+            fb.box.max.y);
+    f.blocks.push_back(fb);
+  }
+  return f;
+}
+
+std::vector<MaterialConfig> parse_materials(const Reader& root,
+                                            std::vector<std::pair<std::string, int>>& lines) {
+  std::vector<MaterialConfig> out;
+  auto r = root.table("materials", "[materials.<name>] tables");
+  if (!r) return out;
+  for (auto&& [k, node] : r->raw()) {
+    const std::string name(k.str());
+    const toml::table* t = node.as_table();
+    const int kl = static_cast<int>(k.source().begin.line);
+    if (!t)
+      fail(r->source(), kl, r->key_path(name), "wrong type",
+           "a table [materials." + name + "] with density, youngs_modulus, poisson_ratio",
+           case_detail::describe(node));
+    const Reader m(r->source(), *t, r->key_path(name), kl);
+    m.allow({"model", "density", "youngs_modulus", "poisson_ratio", "av_alpha", "av_beta",
+             "hourglass"});
+    MaterialConfig mc;
+    mc.name = name;
+    mc.model = m.choice("model", kModels).value_or("svk");
+    mc.density = num(m, "density", positive("a positive density in kg/m^3"));
+    mc.youngs_modulus = num(m, "youngs_modulus", positive("a positive Young's modulus in Pa"), 0.0);
+    mc.poisson_ratio =
+        num(m, "poisson_ratio", {-1.0, 0.5, true, true, "a Poisson ratio in (-1, 0.5)"}, 0.0);
+    mc.av_alpha = num(m, "av_alpha", non_negative("an artificial-viscosity alpha >= 0"), 1.0);
+    mc.av_beta = num(m, "av_beta", non_negative("an artificial-viscosity beta >= 0"), 0.0);
+    mc.hourglass = num(m, "hourglass", non_negative("an hourglass coefficient >= 0"), 0.0);
+    out.push_back(mc);
+    lines.push_back({name, m.line()});
+  }
+  return out;
+}
+
+ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) {
+  auto r = body.table("shape", "a [body.shape] table with type and its keys");
+  if (!r)
+    body.missing("shape", "a [body.shape] table (type = " +
+                              std::string("rectangle, disc, ring, polygon or tank)"));
+  ShapeConfig s;
+  s.type = r->choice("type", kShapes).value_or("");
+  if (s.type.empty()) r->missing("type", "one of 'rectangle', 'disc', 'ring', 'polygon', 'tank'");
+  const std::string ctx = "for shape type '" + s.type + "'";
+  if (s.type == "rectangle") {
+    r->allow({"type", "min", "max"}, ctx);
+    s.box = read_box(*r);
+  } else if (s.type == "disc") {
+    r->allow({"type", "centre", "radius"}, ctx);
+    s.centre = vec(*r, "centre", "coordinates in m");
+    s.radius = num(*r, "radius", positive("a positive radius in m"));
+  } else if (s.type == "ring") {
+    r->allow({"type", "centre", "inner_radius", "outer_radius", "layers"}, ctx);
+    s.centre = vec(*r, "centre", "coordinates in m");
+    s.inner_radius = num(*r, "inner_radius", non_negative("a radius >= 0 in m"));
+    s.outer_radius = num(*r, "outer_radius", positive("a positive radius in m"));
+    if (!(s.outer_radius > s.inner_radius))
+      r->check(false, "outer_radius", "must exceed inner_radius = " + pretty(s.inner_radius),
+               "an outer radius > inner radius in m", s.outer_radius);
+    const auto l = r->integer("layers", "a whole number of layers >= 1");
+    if (l && *l < 1)
+      r->bad("layers", "must be >= 1", "a whole number of layers >= 1", std::to_string(*l));
+    s.layers = l ? static_cast<int>(*l) : 0;
+    s.layers = ring_thickness_layers(s, dx);
+  } else if (s.type == "polygon") {
+    r->allow({"type", "vertices"}, ctx);
+    const std::string e = "an array of >= 3 vertices [[x, y], ...] in m";
+    const auto v = r->rows("vertices", 2, e);
+    if (!v) r->missing("vertices", e);
+    if (v->size() < 3) r->bad("vertices", "too few vertices", e, std::to_string(v->size()));
+    for (const auto& row : *v) s.vertices.push_back({row[0], row[1]});
+    double a = 0.0;
+    for (std::size_t i = 0, j = s.vertices.size() - 1; i < s.vertices.size(); j = i++)
+      a += cross(s.vertices[j], s.vertices[i]);
+    if (!(std::abs(a) > 0.0)) r->bad("vertices", "polygon has zero area", e);
+  } else {  // tank
+    r->allow({"type", "min", "max", "layers", "open_top"}, ctx);
+    if (kind == "elastic" || kind == "rigid_free")
+      r->bad("type", "a tank must be a rigid_fixed or rigid_prescribed body",
+             "kind = 'rigid_fixed' on the body", "kind '" + kind + "'");
+    s.box = read_box(*r);
+    const auto l = r->integer("layers", "a whole number of wall layers >= 1");
+    if (l && *l < 1)
+      r->bad("layers", "must be >= 1", "a whole number of wall layers >= 1", std::to_string(*l));
+    s.layers = l ? static_cast<int>(*l) : kDefaultTankLayers;
+    s.open_top = r->boolean("open_top").value_or(true);
+  }
+  return s;
+}
+
+BodyConfig parse_body(const Reader& r, const CaseConfig& c,
+                      const std::vector<std::pair<std::string, int>>& mat_lines) {
+  BodyConfig b;
+  const auto name = r.string("name", "a body name");
+  if (!name || name->empty()) r.missing("name", "a non-empty body name");
+  b.name = *name;
+  b.kind = r.choice("kind", kKinds).value_or("elastic");
+  std::vector<std::string> keys{"name",      "kind",     "material",         "dx",
+                                "h_over_dx", "velocity", "angular_velocity", "gravity",
+                                "shape"};
+  if (b.kind == "elastic")
+    keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp"});
+  else
+    keys.push_back("density");
+  if (b.kind == "rigid_prescribed") keys.push_back("motion");
+  if (b.kind == "rigid_free") keys.insert(keys.end(), {"mass", "inertia", "allow_rotation"});
+  r.allow(keys, "for a body of kind '" + b.kind + "'");
+
+  b.dx = num(r, "dx", positive("a positive particle spacing in m"), c.numerics.dx);
+  b.h_over_dx =
+      num(r, "h_over_dx", {1.0, 3.0, false, false, "a ratio h/dx in [1, 3]"}, c.numerics.h_over_dx);
+  b.velocity = vec(r, "velocity", "velocities in m/s", Vec2{});
+  b.angular_velocity = num(r, "angular_velocity", any("an angular velocity in rad/s"), 0.0);
+  b.gravity = r.boolean("gravity").value_or(true);
+
+  b.material = r.string("material", "the name of a [materials.<name>] table").value_or("");
+  const MaterialConfig* mat = nullptr;
+  if (!b.material.empty()) {
+    mat = c.find_material(b.material);
+    if (!mat) {
+      std::vector<std::string> names;
+      for (const auto& m : c.materials) names.push_back(m.name);
+      const std::string near = case_detail::nearest(b.material, names);
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+      r.bad("material",
+            "unknown material" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
+            names.empty() ? "a [materials.<name>] table of that name (none defined)"
+                          : "one of " + list,
+            "\"" + b.material + "\"");
+    }
+  }
+  if (b.kind == "elastic") {
+    if (!mat)
+      r.missing("material", "the name of a [materials.<name>] table (elastic bodies need one)");
+    if (!(mat->youngs_modulus > 0.0)) {
+      int ml = r.line("material");
+      for (const auto& [n, l] : mat_lines)
+        if (n == mat->name) ml = l;
+      fail(r.source(), ml, "materials." + mat->name + ".youngs_modulus",
+           "missing required key (material used by elastic body '" + b.name + "')",
+           "a positive Young's modulus in Pa");
+    }
+    b.density = mat->density;
+    b.scheme = r.choice("scheme", kSchemes).value_or("tl_sfpm");
+    b.initial_profile = r.choice("initial_profile", kProfiles).value_or("");
+  } else {
+    const auto d = r.number("density", "a positive density in kg/m^3");
+    if (d) {
+      r.check(*d > 0.0, "density", "must be > 0", "a positive density in kg/m^3", *d);
+      b.density = *d;
+    } else if (mat) {
+      b.density = mat->density;
+    } else if (b.kind == "rigid_free") {
+      r.missing("density", "a density in kg/m^3 (or a material) for a rigid_free body");
+    } else {
+      b.density = c.fluid.density;
+    }
+    b.scheme = "tl_sfpm";
+  }
+
+  b.shape = parse_shape(r, b.kind, b.dx);
+
+  if (b.initial_profile == "cantilever_mode") {
+    b.mode_vf = num(r, "mode_vf", any("the mode's free-end velocity amplitude in m/s"));
+    if (b.shape.type != "rectangle")
+      r.bad("initial_profile", "cantilever_mode needs a rectangle shape",
+            "shape.type = 'rectangle'", "\"" + b.shape.type + "\"");
+  } else if (r.has("mode_vf")) {
+    r.bad("mode_vf", "only used with initial_profile = 'cantilever_mode'",
+          "no mode_vf, or initial_profile = 'cantilever_mode'");
+  }
+
+  if (auto cl = r.table("clamp", "a [body.clamp] table with box and/or layers")) {
+    cl->allow({"box", "layers"});
+    if (auto bx = cl->table("box", "an inline table {min = [x, y], max = [x, y]}")) {
+      bx->allow({"min", "max"});
+      b.clamp.box = read_box(*bx);
+    }
+    if (auto ls = cl->int_list("layers", "an array of ring layer indices")) {
+      if (b.shape.type != "ring")
+        cl->bad("layers", "clamped layers need a ring shape",
+                "clamp.box for shape '" + b.shape.type + "'");
+      std::set<long> seen;
+      for (long l : *ls) {
+        if (l < 0 || l >= b.shape.layers || !seen.insert(l).second)
+          cl->bad(
+              "layers",
+              l < 0 || l >= b.shape.layers ? "layer index out of range" : "duplicate layer index",
+              "distinct indices in [0, " + std::to_string(b.shape.layers - 1) + "]",
+              std::to_string(l));
+        b.clamp.layers.push_back(static_cast<int>(l));
+      }
+    }
+  }
+  if (b.initial_profile == "cantilever_mode" && !b.clamp.box)
+    r.bad("initial_profile", "cantilever_mode needs a clamped end",
+          "a [body.clamp] table with box = {min, max}");
+
+  if (b.kind == "rigid_prescribed") {
+    const std::string e = "rows [t, vx, vy] (s, m/s) with increasing t >= 0";
+    if (auto rows = r.rows("motion", 3, e)) {
+      if (rows->empty()) r.bad("motion", "empty table", e);
+      double prev = -kInf;
+      for (const auto& row : *rows) {
+        if (!(row[0] >= 0.0) || !(row[0] > prev))
+          r.check(false, "motion", "times must be >= 0 and strictly increasing", e, row[0]);
+        prev = row[0];
+        b.motion.push_back({row[0], {row[1], row[2]}});
+      }
+    } else {
+      b.motion.push_back({0.0, b.velocity});
+    }
+  }
+  if (b.kind == "rigid_free") {
+    if (auto m = r.number("mass", "a positive mass per length in kg/m")) {
+      r.check(*m > 0.0, "mass", "must be > 0", "a positive mass per length in kg/m", *m);
+      b.mass = *m;
+    }
+    if (auto i = r.number("inertia", "a positive moment of inertia in kg m^2/m")) {
+      r.check(*i > 0.0, "inertia", "must be > 0", "a positive moment of inertia in kg m^2/m", *i);
+      b.inertia = *i;
+    }
+    b.allow_rotation = r.boolean("allow_rotation").value_or(true);
+  }
+  return b;
+}
+
+OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
+  OutputConfig o;
+  o.interval = c.numerics.end_time / 50.0;
+  auto r = root.table("output", "an [output] table");
+  if (!r) return o;
+  r->allow({"interval", "probe_interval", "vtk", "plot", "probe"});
+  o.interval = num(*r, "interval", positive("a positive output interval in s"), o.interval);
+  o.probe_interval =
+      num(*r, "probe_interval", non_negative("a probe interval >= 0 in s (0 = every step)"), 0.0);
+  o.vtk = r->boolean("vtk").value_or(true);
+  o.plot = r->choice("plot", kPlots).value_or("");
+  const auto probes = r->table_array("probe", "[[output.probe]] tables with name and kind");
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const Reader& p = probes[i];
+    ProbeConfig pc;
+    pc.kind = p.choice("kind", kProbeKinds).value_or("");
+    if (pc.kind.empty())
+      p.missing("kind", "one of 'pressure', 'surge_front', 'water_height', 'body_pressure'");
+    const std::string ctx = "for probe kind '" + pc.kind + "'";
+    if (pc.kind == "pressure") p.allow({"name", "kind", "position"}, ctx);
+    if (pc.kind == "surge_front") p.allow({"name", "kind"}, ctx);
+    if (pc.kind == "water_height") p.allow({"name", "kind", "x"}, ctx);
+    if (pc.kind == "body_pressure") p.allow({"name", "kind", "body", "position"}, ctx);
+    pc.name = p.string("name", "a probe name").value_or(pc.kind + "_" + std::to_string(i));
+    if (pc.name.empty()) p.bad("name", "empty name", "a non-empty probe name");
+    if (!names.insert(pc.name).second)
+      p.bad("name", "duplicate probe name", "a name no other probe uses", "\"" + pc.name + "\"");
+    if (pc.kind == "pressure" || pc.kind == "body_pressure") {
+      pc.position = vec(p, "position", "coordinates in m");
+      if (!box_inside({pc.position, pc.position}, c.numerics.domain))
+        p.bad("position", "outside the domain",
+              "a point inside numerics.domain " + box_text(c.numerics.domain),
+              vec_text(pc.position));
+    }
+    if (pc.kind == "water_height") {
+      pc.x = num(p, "x", any("an x coordinate in m"));
+      const Box& d = c.numerics.domain;
+      p.check(pc.x >= d.min.x && pc.x <= d.max.x, "x", "outside the domain",
+              "an x in [" + pretty(d.min.x) + ", " + pretty(d.max.x) + "]", pc.x);
+    }
+    if (pc.kind == "body_pressure") {
+      const auto body = p.string("body", "the name of a [[body]]");
+      if (!body) p.missing("body", "the name of a [[body]]");
+      pc.body = *body;
+      bool found = false;
+      std::vector<std::string> bnames;
+      for (const auto& b : c.bodies) {
+        found = found || b.name == pc.body;
+        bnames.push_back(b.name);
+      }
+      if (!found) {
+        const std::string near = case_detail::nearest(pc.body, bnames);
+        p.bad("body", "unknown body" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
+              "the name of a [[body]]", "\"" + pc.body + "\"");
+      }
+    }
+    o.probes.push_back(pc);
+  }
+  return o;
+}
+
+CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
+  const Reader root(source, tbl, "", 1);
+  CaseConfig c;
+  c.source_path = source;
+  const auto sv = root.integer("schema_version", "schema_version = 1");
+  if (!sv) root.missing("schema_version", "schema_version = 1 (an integer)");
+  if (*sv != kCaseSchemaVersion)
+    root.bad("schema_version", "unsupported schema version", "1", std::to_string(*sv));
+  c.schema_version = static_cast<int>(*sv);
+  root.allow({"schema_version", "name", "numerics", "fluid", "materials", "body", "output"});
+  const auto name = root.string("name", "a case name");
+  if (!name || name->empty()) root.missing("name", "a non-empty case name (a string)");
+  c.name = *name;
+
+  c.numerics = parse_numerics(root);
+  std::vector<Reader> blocks;
+  c.fluid = parse_fluid(root, c.numerics, blocks);
+  std::vector<std::pair<std::string, int>> mat_lines;
+  c.materials = parse_materials(root, mat_lines);
+
+  const auto bodies = root.table_array("body", "[[body]] tables");
+  std::set<std::string> body_names;
+  for (const Reader& br : bodies) {
+    BodyConfig b = parse_body(br, c, mat_lines);
+    if (!body_names.insert(b.name).second)
+      br.bad("name", "duplicate body name", "a name no other body uses", "\"" + b.name + "\"");
+    const Box bb = shape_bounds(b.shape, b.dx);
+    if (!box_inside(bb, c.numerics.domain)) {
+      const auto sh = br.table("shape", "");
+      fail(source, sh->line(), sh->path(),
+           "body '" + b.name + "' (bounds " + box_text(bb) + ") lies outside the domain",
+           "a shape inside numerics.domain " + box_text(c.numerics.domain));
+    }
+    c.bodies.push_back(std::move(b));
+  }
+
+  // Fluid blocks must lie inside a tank's inner box when the case has a tank.
+  std::vector<Box> tanks;
+  for (const auto& b : c.bodies)
+    if (b.shape.type == "tank") tanks.push_back(b.shape.box);
+  if (!tanks.empty())
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      bool in = false;
+      for (const Box& t : tanks) in = in || box_inside(c.fluid.blocks[i].box, t);
+      if (!in)
+        blocks[i].bad(
+            "max",
+            "fluid block " + box_text(c.fluid.blocks[i].box) + " lies outside the tank's inner box",
+            "a block inside the tank's inner box " + box_text(tanks[0]));
+    }
+
+  c.output = parse_output(root, c);
+
+  if (c.fluid.blocks.empty() && c.bodies.empty())
+    fail(source, 1, "case", "no particles: no [[fluid.block]] and no [[body]]",
+         "at least one fluid block or body");
+  return c;
+}
+
+}  // namespace
+
+CaseConfig parse_case_string(const std::string& text, const std::string& source_name) {
+  toml::table tbl;
+  try {
+    tbl = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    const auto& b = e.source().begin;
+    fail(source_name, static_cast<int>(b.line), "(toml syntax)",
+         std::string(e.description()) + " (column " + std::to_string(b.column) + ")", "valid TOML");
+  }
+  return parse_root(tbl, source_name);
+}
+
+CaseConfig load_case(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the case file; expected a readable TOML file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_case_string(ss.str(), path);
+}
+
+}  // namespace slamsph

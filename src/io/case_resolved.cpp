@@ -1,0 +1,184 @@
+// resolved_case_toml: the case with every default written out (case.resolved.toml), in the
+// schema of docs/case_format.md, so parse_case_string(resolved_case_toml(c)) == c.
+#include <cstdio>
+#include <sstream>
+
+#include "io/case_file.h"
+#include "io/case_reader.h"
+
+namespace slamsph {
+
+namespace {
+
+using case_detail::format_double;
+
+std::string q(const std::string& s) {
+  std::string o = "\"";
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') {
+      o += '\\';
+      o += ch;
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      o += buf;
+    } else {
+      o += ch;
+    }
+  }
+  return o + "\"";
+}
+
+std::string key(const std::string& k) {
+  const bool bare = !k.empty() && k.find_first_not_of(
+                                      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                      "0123456789_-") == std::string::npos;
+  return bare ? k : q(k);
+}
+
+std::string d(double v) {
+  return format_double(v);
+}
+std::string v2(Vec2 v) {
+  return "[" + d(v.x) + ", " + d(v.y) + "]";
+}
+std::string b(bool v) {
+  return v ? "true" : "false";
+}
+
+void box(std::ostream& o, const Box& bx) {
+  o << "min = " << v2(bx.min) << "  # [m]\n";
+  o << "max = " << v2(bx.max) << "  # [m]\n";
+}
+
+}  // namespace
+
+std::string resolved_case_toml(const CaseConfig& c) {
+  std::ostringstream o;
+  o << "# Resolved case: every default filled in (docs/case_format.md). SI units.\n";
+  o << "schema_version = " << c.schema_version << "\n";
+  o << "name = " << q(c.name) << "\n\n";
+
+  const NumericsConfig& n = c.numerics;
+  o << "[numerics]\n";
+  o << "dx = " << d(n.dx) << "  # [m]\n";
+  o << "h_over_dx = " << d(n.h_over_dx) << "\n";
+  o << "kernel = " << q(kernel_name(n.kernel)) << "\n";
+  o << "cfl = " << d(n.cfl) << "\n";
+  o << "solid_cfl = " << d(n.solid_cfl) << "\n";
+  o << "end_time = " << d(n.end_time) << "  # [s]\n";
+  o << "gravity = " << v2(n.gravity) << "  # [m/s^2]\n";
+  o << "neighbour_skin = " << d(n.neighbour_skin) << "\n";
+  o << "dual_time_stepping = " << b(n.dual_time_stepping) << "\n";
+  o << "dt_floor = " << d(n.dt_floor) << "  # [s]\n\n";
+  o << "[numerics.domain]\n";
+  box(o, n.domain);
+
+  const FluidConfig& f = c.fluid;
+  if (!f.blocks.empty() || f.sound_speed > 0.0) {
+    o << "\n[fluid]\n";
+    o << "density = " << d(f.density) << "  # [kg/m^3]\n";
+    o << "sound_speed = " << d(f.sound_speed) << "  # [m/s]\n";
+    o << "gamma = " << d(f.gamma) << "\n";
+    o << "limiter_omega = " << d(f.limiter_omega) << "\n";
+    o << "viscosity = " << d(f.viscosity) << "  # [m^2/s]\n";
+    for (const auto& bl : f.blocks) {
+      o << "\n[[fluid.block]]\n";
+      box(o, bl.box);
+      o << "surface = " << d(bl.surface) << "  # [m]\n";
+    }
+  }
+
+  for (const auto& m : c.materials) {
+    o << "\n[materials." << key(m.name) << "]\n";
+    o << "model = " << q(m.model) << "\n";
+    o << "density = " << d(m.density) << "  # [kg/m^3]\n";
+    if (m.youngs_modulus > 0.0) o << "youngs_modulus = " << d(m.youngs_modulus) << "  # [Pa]\n";
+    o << "poisson_ratio = " << d(m.poisson_ratio) << "\n";
+    o << "av_alpha = " << d(m.av_alpha) << "\n";
+    o << "av_beta = " << d(m.av_beta) << "\n";
+    o << "hourglass = " << d(m.hourglass) << "\n";
+  }
+
+  for (const auto& bd : c.bodies) {
+    o << "\n[[body]]\n";
+    o << "name = " << q(bd.name) << "\n";
+    o << "kind = " << q(bd.kind) << "\n";
+    if (!bd.material.empty()) o << "material = " << q(bd.material) << "\n";
+    if (bd.kind == "elastic") {
+      o << "scheme = " << q(bd.scheme) << "\n";
+    } else {
+      o << "density = " << d(bd.density) << "  # [kg/m^3]\n";
+    }
+    o << "dx = " << d(bd.dx) << "  # [m]\n";
+    o << "h_over_dx = " << d(bd.h_over_dx) << "\n";
+    o << "velocity = " << v2(bd.velocity) << "  # [m/s]\n";
+    o << "angular_velocity = " << d(bd.angular_velocity) << "  # [rad/s]\n";
+    o << "gravity = " << b(bd.gravity) << "\n";
+    if (bd.kind == "elastic") {
+      o << "initial_profile = " << q(bd.initial_profile) << "\n";
+      if (bd.initial_profile == "cantilever_mode")
+        o << "mode_vf = " << d(bd.mode_vf) << "  # [m/s]\n";
+    }
+    if (bd.kind == "rigid_prescribed") {
+      o << "motion = [  # [t (s), vx (m/s), vy (m/s)]\n";
+      for (const auto& mp : bd.motion)
+        o << "  [" << d(mp.t) << ", " << d(mp.v.x) << ", " << d(mp.v.y) << "],\n";
+      o << "]\n";
+    }
+    if (bd.kind == "rigid_free") {
+      if (bd.mass) o << "mass = " << d(*bd.mass) << "  # [kg/m]\n";
+      if (bd.inertia) o << "inertia = " << d(*bd.inertia) << "  # [kg m^2/m]\n";
+      o << "allow_rotation = " << b(bd.allow_rotation) << "\n";
+    }
+    const ShapeConfig& s = bd.shape;
+    o << "\n[body.shape]\n";
+    o << "type = " << q(s.type) << "\n";
+    if (s.type == "rectangle" || s.type == "tank") box(o, s.box);
+    if (s.type == "disc" || s.type == "ring") o << "centre = " << v2(s.centre) << "  # [m]\n";
+    if (s.type == "disc") o << "radius = " << d(s.radius) << "  # [m]\n";
+    if (s.type == "ring") {
+      o << "inner_radius = " << d(s.inner_radius) << "  # [m]\n";
+      o << "outer_radius = " << d(s.outer_radius) << "  # [m]\n";
+    }
+    if (s.type == "ring" || s.type == "tank") o << "layers = " << s.layers << "\n";
+    if (s.type == "tank") o << "open_top = " << b(s.open_top) << "\n";
+    if (s.type == "polygon") {
+      o << "vertices = [";
+      for (std::size_t i = 0; i < s.vertices.size(); ++i) o << (i ? ", " : "") << v2(s.vertices[i]);
+      o << "]  # [m]\n";
+    }
+    if (bd.kind == "elastic" && (bd.clamp.box || !bd.clamp.layers.empty())) {
+      o << "\n[body.clamp]\n";
+      if (bd.clamp.box)
+        o << "box = {min = " << v2(bd.clamp.box->min) << ", max = " << v2(bd.clamp.box->max)
+          << "}  # [m]\n";
+      if (!bd.clamp.layers.empty()) {
+        o << "layers = [";
+        for (std::size_t i = 0; i < bd.clamp.layers.size(); ++i)
+          o << (i ? ", " : "") << bd.clamp.layers[i];
+        o << "]\n";
+      }
+    }
+  }
+
+  const OutputConfig& out = c.output;
+  o << "\n[output]\n";
+  o << "interval = " << d(out.interval) << "  # [s]\n";
+  o << "probe_interval = " << d(out.probe_interval) << "  # [s]\n";
+  o << "vtk = " << b(out.vtk) << "\n";
+  o << "plot = " << q(out.plot) << "\n";
+  for (const auto& p : out.probes) {
+    o << "\n[[output.probe]]\n";
+    o << "name = " << q(p.name) << "\n";
+    o << "kind = " << q(p.kind) << "\n";
+    if (p.kind == "pressure" || p.kind == "body_pressure")
+      o << "position = " << v2(p.position) << "  # [m]\n";
+    if (p.kind == "water_height") o << "x = " << d(p.x) << "  # [m]\n";
+    if (p.kind == "body_pressure") o << "body = " << q(p.body) << "\n";
+  }
+  return o.str();
+}
+
+}  // namespace slamsph

@@ -1,0 +1,284 @@
+// Case-file validation: every class of bad input gives one InputError whose message names
+// the file, the line and the key path ("<file>:<line>: <key>: <what>; expected <what>").
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "io/case_file.h"
+
+using namespace slamsph;
+
+namespace {
+
+const std::string kBase = R"(schema_version = 1
+name = "base"
+
+[numerics]
+dx = 0.01
+end_time = 1.0
+
+[numerics.domain]
+min = [-0.5, -0.5]
+max = [2.0, 2.0]
+
+[fluid]
+sound_speed = 20.0
+
+[[fluid.block]]
+min = [0.0, 0.0]
+max = [1.0, 0.5]
+
+[materials.rubber]
+density = 1100.0
+youngs_modulus = 1.2e7
+poisson_ratio = 0.4
+
+[[body]]
+name = "tank"
+kind = "rigid_fixed"
+
+[body.shape]
+type = "tank"
+min = [0.0, 0.0]
+max = [1.0, 1.0]
+
+[[body]]
+name = "cyl"
+material = "rubber"
+
+[body.shape]
+type = "disc"
+centre = [0.5, 0.7]
+radius = 0.1
+
+[output]
+
+[[output.probe]]
+name = "bp"
+kind = "body_pressure"
+body = "cyl"
+position = [0.5, 0.6]
+)";
+
+// Replace the n-th (1-based) occurrence of a whole line.
+std::string replace_line(std::string text, const std::string& from, const std::string& to,
+                         int occurrence = 1) {
+  std::size_t pos = 0;
+  for (int k = 0; k < occurrence; ++k) {
+    pos = text.find(from + "\n", k == 0 ? 0 : pos + 1);
+    while (pos != std::string::npos && pos > 0 && text[pos - 1] != '\n')
+      pos = text.find(from + "\n", pos + 1);
+    if (pos == std::string::npos) throw std::logic_error("test: line not found: " + from);
+  }
+  return text.replace(pos, from.size(), to);
+}
+
+// 1-based line of the first line starting with `start`.
+int line_of(const std::string& text, const std::string& start, int occurrence = 1) {
+  int line = 1, seen = 0;
+  std::size_t b = 0;
+  while (b < text.size()) {
+    const std::size_t e = text.find('\n', b);
+    if (text.compare(b, start.size(), start) == 0 && ++seen == occurrence) return line;
+    if (e == std::string::npos) break;
+    b = e + 1;
+    ++line;
+  }
+  throw std::logic_error("test: no line starts with " + start);
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_case_string(text, "cases/bad.toml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+// Asserts the message starts with "cases/bad.toml:<line>: <key>: " and contains `part`.
+void expect_error(const std::string& text, int line, const std::string& key,
+                  const std::string& part = "") {
+  const std::string msg = error_of(text);
+  const std::string prefix = "cases/bad.toml:" + std::to_string(line) + ": " + key + ": ";
+  EXPECT_EQ(msg.rfind(prefix, 0), 0u) << "message: " << msg << "\nexpected prefix: " << prefix;
+  EXPECT_NE(msg.find("; expected "), std::string::npos) << msg;
+  if (!part.empty()) {
+    EXPECT_NE(msg.find(part), std::string::npos) << msg << "\nmissing: " << part;
+  }
+}
+
+}  // namespace
+
+TEST(IoCaseErrors, BaseCaseIsValid) {
+  EXPECT_EQ(error_of(kBase), "(no error)");
+}
+
+TEST(IoCaseErrors, MalformedToml) {
+  const std::string t = replace_line(kBase, "end_time = 1.0", "end_time = = 1.0");
+  expect_error(t, line_of(t, "end_time"), "(toml syntax)", "valid TOML");
+}
+
+TEST(IoCaseErrors, UnknownKeySuggestsNearest) {
+  const std::string t = replace_line(kBase, "sound_speed = 20.0", "sound_sped = 20.0");
+  expect_error(t, line_of(t, "sound_sped"), "fluid.sound_sped", "did you mean 'sound_speed'?");
+  const std::string b = replace_line(kBase, "radius = 0.1", "radus = 0.1");
+  expect_error(b, line_of(b, "radus"), "body[1].shape.radus", "did you mean 'radius'?");
+  const std::string top = replace_line(kBase, "name = \"base\"", "nmae = \"base\"");
+  expect_error(top, 2, "nmae", "did you mean 'name'?");
+}
+
+TEST(IoCaseErrors, KeyNotValidForBodyKind) {
+  const std::string t =
+      replace_line(kBase, "kind = \"rigid_fixed\"", "kind = \"rigid_fixed\"\nscheme = \"tlsph\"");
+  expect_error(t, line_of(t, "scheme"), "body[0].scheme",
+               "unknown key for a body of kind 'rigid_fixed'");
+}
+
+TEST(IoCaseErrors, MissingRequiredKeyReportsTableLine) {
+  const std::string t = replace_line(kBase, "dx = 0.01", "");
+  expect_error(t, line_of(t, "[numerics]"), "numerics.dx", "missing required key");
+  const std::string s = replace_line(kBase, "sound_speed = 20.0", "");
+  expect_error(s, line_of(s, "[fluid]"), "fluid.sound_speed", "missing required key");
+  const std::string r = replace_line(kBase, "radius = 0.1", "");
+  expect_error(r, line_of(r, "[body.shape]", 2), "body[1].shape.radius", "missing required key");
+  const std::string v = replace_line(kBase, "schema_version = 1", "");
+  expect_error(v, 1, "schema_version", "missing required key");
+}
+
+TEST(IoCaseErrors, WrongType) {
+  const std::string t = replace_line(kBase, "dx = 0.01", "dx = \"0.01\"");
+  expect_error(t, line_of(t, "dx"), "numerics.dx",
+               "wrong type; expected a positive length in m, got a string");
+  const std::string v = replace_line(kBase, "centre = [0.5, 0.7]", "centre = [0.5, 0.7, 0.0]");
+  expect_error(v, line_of(v, "centre"), "body[1].shape.centre", "wrong length");
+  const std::string b = replace_line(kBase, "name = \"cyl\"", "name = \"cyl\"\ngravity = 1");
+  expect_error(b, line_of(b, "gravity"), "body[1].gravity",
+               "expected true or false, got an integer");
+}
+
+TEST(IoCaseErrors, IntegersAcceptedWhereFloatsExpected) {
+  const std::string t = replace_line(kBase, "end_time = 1.0", "end_time = 2");
+  EXPECT_EQ(parse_case_string(t, "x").numerics.end_time, 2.0);
+}
+
+TEST(IoCaseErrors, NonPositiveDx) {
+  const std::string t = replace_line(kBase, "dx = 0.01", "dx = -0.01");
+  EXPECT_EQ(error_of(t),
+            "cases/bad.toml:" + std::to_string(line_of(t, "dx")) +
+                ": numerics.dx: must be > 0; expected a positive length in m, got -0.01");
+  const std::string b = replace_line(kBase, "name = \"cyl\"", "name = \"cyl\"\ndx = 0");
+  expect_error(b, line_of(b, "dx = 0", 2), "body[1].dx", "must be > 0");
+}
+
+TEST(IoCaseErrors, NonPositiveDensity) {
+  const std::string t = replace_line(kBase, "density = 1100.0", "density = -1100.0");
+  expect_error(t, line_of(t, "density"), "materials.rubber.density", "must be > 0");
+  const std::string f =
+      replace_line(kBase, "sound_speed = 20.0", "sound_speed = 20.0\ndensity = 0");
+  expect_error(f, line_of(f, "density"), "fluid.density", "got 0.0");
+}
+
+TEST(IoCaseErrors, PoissonRatioOutOfRange) {
+  for (const char* nu : {"0.5", "-1.0", "0.7"}) {
+    const std::string t =
+        replace_line(kBase, "poisson_ratio = 0.4", std::string("poisson_ratio = ") + nu);
+    expect_error(t, line_of(t, "poisson_ratio"), "materials.rubber.poisson_ratio",
+                 "must be in (-1, 0.5)");
+  }
+}
+
+TEST(IoCaseErrors, NonPositiveEndTime) {
+  const std::string t = replace_line(kBase, "end_time = 1.0", "end_time = 0.0");
+  expect_error(t, line_of(t, "end_time"), "numerics.end_time", "must be > 0");
+}
+
+TEST(IoCaseErrors, FluidBlockOutsideDomain) {
+  const std::string t = replace_line(kBase, "max = [1.0, 0.5]", "max = [2.5, 0.5]");
+  expect_error(t, line_of(t, "max = [2.5"), "fluid.block[0].max", "outside the domain");
+}
+
+TEST(IoCaseErrors, FluidBlockOutsideTankInnerBox) {
+  const std::string t = replace_line(kBase, "max = [1.0, 0.5]", "max = [1.2, 0.5]");
+  expect_error(t, line_of(t, "max = [1.2"), "fluid.block[0].max", "outside the tank's inner box");
+}
+
+TEST(IoCaseErrors, BoxMinNotBelowMax) {
+  const std::string t = replace_line(kBase, "max = [1.0, 0.5]", "max = [1.0, 0.0]");
+  expect_error(t, line_of(t, "max = [1.0, 0.0]"), "fluid.block[0].max", "must exceed min");
+  const std::string d = replace_line(kBase, "max = [2.0, 2.0]", "max = [-1.0, 2.0]");
+  expect_error(d, line_of(d, "max = [-1.0"), "numerics.domain.max", "must exceed min");
+}
+
+TEST(IoCaseErrors, BodyShapeOutsideDomain) {
+  const std::string t = replace_line(kBase, "centre = [0.5, 0.7]", "centre = [1.95, 0.7]");
+  expect_error(t, line_of(t, "[body.shape]", 2), "body[1].shape", "body 'cyl'");
+  // Tank walls (4 layers of 0.01 m) stick out below a domain starting at -0.02.
+  const std::string w = replace_line(kBase, "min = [-0.5, -0.5]", "min = [-0.5, -0.02]");
+  expect_error(w, line_of(w, "[body.shape]", 1), "body[0].shape", "outside the domain");
+}
+
+TEST(IoCaseErrors, UnknownMaterial) {
+  const std::string t = replace_line(kBase, "material = \"rubber\"", "material = \"ruber\"");
+  expect_error(t, line_of(t, "material = "), "body[1].material", "did you mean 'rubber'?");
+}
+
+TEST(IoCaseErrors, UnknownEnumerations) {
+  const std::string k = replace_line(kBase, "dx = 0.01", "dx = 0.01\nkernel = \"wendland\"");
+  expect_error(k, line_of(k, "kernel"), "numerics.kernel", "unknown value");
+  const std::string kind = replace_line(kBase, "kind = \"rigid_fixed\"", "kind = \"rigid_fxed\"");
+  expect_error(kind, line_of(kind, "kind"), "body[0].kind", "did you mean 'rigid_fixed'?");
+  const std::string sch =
+      replace_line(kBase, "material = \"rubber\"", "material = \"rubber\"\nscheme = \"sph\"");
+  expect_error(sch, line_of(sch, "scheme"), "body[1].scheme", "'tl_sfpm', 'tlsph'");
+  const std::string shp = replace_line(kBase, "type = \"disc\"", "type = \"circle\"");
+  expect_error(shp, line_of(shp, "type = \"circle\""), "body[1].shape.type", "unknown value");
+  const std::string pk = replace_line(kBase, "kind = \"body_pressure\"", "kind = \"presure\"");
+  expect_error(pk, line_of(pk, "kind = \"presure\""), "output.probe[0].kind",
+               "did you mean 'pressure'?");
+}
+
+TEST(IoCaseErrors, ProbeNamesUnknownBody) {
+  const std::string t = replace_line(kBase, "body = \"cyl\"", "body = \"cylinder\"");
+  expect_error(t, line_of(t, "body = "), "output.probe[0].body", "unknown body");
+}
+
+TEST(IoCaseErrors, NoParticles) {
+  const std::string t = R"(schema_version = 1
+name = "empty"
+[numerics]
+dx = 0.01
+end_time = 1.0
+[numerics.domain]
+min = [0, 0]
+max = [1, 1]
+)";
+  expect_error(t, 1, "case", "no particles");
+}
+
+TEST(IoCaseErrors, SchemaVersionAndDuplicates) {
+  const std::string v = replace_line(kBase, "schema_version = 1", "schema_version = 2");
+  expect_error(v, 1, "schema_version", "unsupported");
+  const std::string d = replace_line(kBase, "name = \"cyl\"", "name = \"tank\"");
+  expect_error(d, line_of(d, "name = \"tank\"", 2), "body[1].name", "duplicate body name");
+}
+
+TEST(IoCaseErrors, LoadCaseNamesTheFile) {
+  const std::string path = ::testing::TempDir() + "slamsph_bad_case.toml";
+  {
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    const std::string t = replace_line(kBase, "dx = 0.01", "dx = -0.01");
+    std::fputs(t.c_str(), f);
+    std::fclose(f);
+  }
+  try {
+    load_case(path);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ":5: numerics.dx: must be > 0", 0), 0u)
+        << e.what();
+  }
+  EXPECT_THROW(load_case(path + ".missing"), InputError);
+}
