@@ -152,38 +152,55 @@ int run_script(const std::string& out_dir, const std::string& stem, const std::s
   return kOk;
 }
 
-// Columns of `t` for tip displacements: header contains "tip" and ends with "[m]".
-std::vector<int> tip_columns(const CsvTable& t) {
+// Columns of `t` for tip displacements: header contains "tip" and ends with "[m]"; if
+// there is none and `pairs`, pairs "<name>_x [m]" + "<name>_y [m]" (what a
+// body_displacement probe writes to probes.csv).
+std::vector<int> tip_columns(const CsvTable& t, bool pairs) {
   std::vector<int> cols;
   for (std::size_t i = 1; i < t.headers.size(); ++i) {
     const std::string h = lower(t.headers[i]);
     if (h.find("tip") != std::string::npos && ends_with(h, "[m]"))
       cols.push_back(static_cast<int>(i));
   }
+  if (!cols.empty() || !pairs) return cols;
+  for (std::size_t i = 1; i < t.headers.size(); ++i) {
+    const std::string& h = t.headers[i];
+    if (!ends_with(h, "_x [m]")) continue;
+    const int j = t.find(h.substr(0, h.size() - 6) + "_y [m]");
+    if (j < 0) continue;
+    cols.push_back(static_cast<int>(i));
+    cols.push_back(j);
+  }
   return cols;
 }
 
-// Finds tip columns (or p.column) in bodies.csv, else probes.csv.
+// Finds the tip columns: p.column, else "tip" columns, in bodies.csv then probes.csv;
+// else displacement-probe pairs in probes.csv.
 bool load_tip_columns(const std::string& out_dir, const PlotParams& p, std::string& csv_name,
                       CsvTable& t, std::vector<int>& cols, std::string& message) {
   std::string tried;
-  for (const char* name : {"bodies.csv", "probes.csv"}) {
-    if (!fs::exists(out_dir + "/" + name)) continue;
-    if (!load(out_dir, name, t, message)) return false;
-    cols.clear();
-    if (!p.column.empty()) {
-      if (t.find(p.column) >= 0) cols.push_back(t.find(p.column));
-    } else {
-      cols = tip_columns(t);
+  for (const bool pairs : {false, true}) {
+    for (const char* name : {"bodies.csv", "probes.csv"}) {
+      if (!fs::exists(out_dir + "/" + name)) continue;
+      if (pairs && (!p.column.empty() || std::string(name) != "probes.csv")) continue;
+      if (!load(out_dir, name, t, message)) return false;
+      cols.clear();
+      if (!p.column.empty()) {
+        if (t.find(p.column) >= 0) cols.push_back(t.find(p.column));
+      } else {
+        cols = tip_columns(t, pairs);
+      }
+      if (!cols.empty()) {
+        csv_name = name;
+        return true;
+      }
+      if (!pairs)
+        tried += std::string(tried.empty() ? "" : "; ") + name + " has " + list_headers(t);
     }
-    if (!cols.empty()) {
-      csv_name = name;
-      return true;
-    }
-    tried += std::string(tried.empty() ? "" : "; ") + name + " has " + list_headers(t);
   }
   message = "plot: no tip-displacement column (" +
-            (p.column.empty() ? std::string("header containing \"tip\" with unit [m]")
+            (p.column.empty() ? std::string("header containing \"tip\" with unit [m], or a "
+                                            "pair \"<name>_x [m]\", \"<name>_y [m]\"")
                               : "\"" + p.column + "\"") +
             ") in " + out_dir + "/bodies.csv or probes.csv" +
             (tried.empty() ? " (neither file exists)" : " (" + tried + ")");
@@ -297,7 +314,7 @@ int plot_dam_break(const std::string& out_dir, const PlotParams& p, const std::s
   int col = t.find(want);
   if (col < 0 && p.column.empty()) {
     for (std::size_t i = 1; i < t.headers.size() && col < 0; ++i)
-      if (t.headers[i].find("surge_front") != std::string::npos && ends_with(t.headers[i], "[m]"))
+      if (lower(t.headers[i]).find("front") != std::string::npos && ends_with(t.headers[i], "[m]"))
         col = static_cast<int>(i);
   }
   if (col < 1) {

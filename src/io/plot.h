@@ -9,11 +9,13 @@
 //      axis s/D) and slamming_coefficient.png (Cs against s/D), each with the
 //      Campbell–Weynberg, von Kármán and Wagner curves (reference_curves.h). Needs
 //      p.velocity and p.radius.
-//  "dam_break": probes.csv column "surge_front [m]" (or p.column) → surge_front.png,
+//  "dam_break": probes.csv column "surge_front [m]" (or p.column; else the first column
+//      whose name contains "front" with unit [m]) → surge_front.png,
 //      Z = (x − p.wall_x)/a against T = t sqrt(2g/a) with the Martin & Moyce and
 //      Koshizuka & Oka points. Needs p.dam_width.
-//  "plate": tip-displacement columns (header contains "tip", unit [m]; or p.column) of
-//      bodies.csv, else probes.csv → plate_tip.png in mm, with A sin(ωt) if
+//  "plate": tip-displacement columns of bodies.csv, else probes.csv: p.column if set,
+//      else headers containing "tip" with unit [m], else pairs "<name>_x [m]" and
+//      "<name>_y [m]" (a body_displacement probe) → plate_tip.png in mm, with A sin(ωt) if
 //      p.plate_omega and p.plate_amplitude are set.
 //  "gate": tip-displacement columns as for "plate" → gate_tip.png in mm with the
 //      Antoci et al. (2007) experimental peaks marked.

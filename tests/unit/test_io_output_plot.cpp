@@ -136,5 +136,33 @@ TEST(IoOutputPlot, DamBreakPlateGateAndGeneric) {
   EXPECT_TRUE(fs::exists(dir / "energy.gp"));
 }
 
+// Column names as the app writes them: bodies.csv "<body> com_x [m]" (not a tip), probes.csv
+// "<probe>_x [m]" / "<probe>_y [m]" for a body_displacement probe, "<probe> [m]" for a front.
+TEST(IoOutputPlot, FindsProbeColumnsByConvention) {
+  SKIP_WITHOUT_GNUPLOT();
+  const fs::path dir = fresh_dir("plot_probes");
+  {
+    CsvWriter b((dir / "bodies.csv").string(), {"time [s]", "gate com_x [m]", "gate com_y [m]"});
+    CsvWriter w((dir / "probes.csv").string(),
+                {"time [s]", "front [m]", "free_end_x [m]", "free_end_y [m]"});
+    for (int i = 0; i <= 40; ++i) {
+      const double t = 0.01 * i;
+      b.row({t, 0.5, 0.5});
+      w.row({t, 0.1 + t, 0.04 * std::sin(10 * t), 0.013 * std::sin(10 * t)});
+    }
+  }
+  PlotParams p;
+  p.dam_width = 0.1;
+  std::string msg;
+  ASSERT_EQ(plot_results(dir.string(), "dam_break", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "surge_front.png"));
+  ASSERT_EQ(plot_results(dir.string(), "gate", p, msg), 0) << msg;
+  EXPECT_NE(msg.find("from probes.csv; free_end_x [m] peak 0.039983 m at 0.16 s"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(msg.find("com_x"), std::string::npos) << msg;
+  EXPECT_TRUE(is_png(dir / "gate_tip.png"));
+}
+
 }  // namespace
 }  // namespace slamsph
