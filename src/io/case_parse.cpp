@@ -27,7 +27,7 @@ const std::vector<std::string> kKinds{"elastic", "rigid_fixed", "rigid_prescribe
 const std::vector<std::string> kSchemes{"tl_sfpm", "tlsph"};
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
 const std::vector<std::string> kProbeKinds{"pressure", "surge_front", "water_height",
-                                           "body_pressure"};
+                                           "body_pressure", "body_displacement"};
 const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
 const std::vector<std::string> kModels{"svk"};
@@ -410,17 +410,20 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     ProbeConfig pc;
     pc.kind = p.choice("kind", kProbeKinds).value_or("");
     if (pc.kind.empty())
-      p.missing("kind", "one of 'pressure', 'surge_front', 'water_height', 'body_pressure'");
+      p.missing("kind",
+                "one of 'pressure', 'surge_front', 'water_height', 'body_pressure', "
+                "'body_displacement'");
     const std::string ctx = "for probe kind '" + pc.kind + "'";
     if (pc.kind == "pressure") p.allow({"name", "kind", "position"}, ctx);
     if (pc.kind == "surge_front") p.allow({"name", "kind"}, ctx);
     if (pc.kind == "water_height") p.allow({"name", "kind", "x"}, ctx);
-    if (pc.kind == "body_pressure") p.allow({"name", "kind", "body", "position"}, ctx);
+    const bool on_body = pc.kind == "body_pressure" || pc.kind == "body_displacement";
+    if (on_body) p.allow({"name", "kind", "body", "position"}, ctx);
     pc.name = p.string("name", "a probe name").value_or(pc.kind + "_" + std::to_string(i));
     if (pc.name.empty()) p.bad("name", "empty name", "a non-empty probe name");
     if (!names.insert(pc.name).second)
       p.bad("name", "duplicate probe name", "a name no other probe uses", "\"" + pc.name + "\"");
-    if (pc.kind == "pressure" || pc.kind == "body_pressure") {
+    if (pc.kind == "pressure" || on_body) {
       pc.position = vec(p, "position", "coordinates in m");
       if (!box_inside({pc.position, pc.position}, c.numerics.domain))
         p.bad("position", "outside the domain",
@@ -433,7 +436,7 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
       p.check(pc.x >= d.min.x && pc.x <= d.max.x, "x", "outside the domain",
               "an x in [" + pretty(d.min.x) + ", " + pretty(d.max.x) + "]", pc.x);
     }
-    if (pc.kind == "body_pressure") {
+    if (on_body) {
       const auto body = p.string("body", "the name of a [[body]]");
       if (!body) p.missing("body", "the name of a [[body]]");
       pc.body = *body;

@@ -173,10 +173,10 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "\n[[output.probe]]\n";
     o << "name = " << q(p.name) << "\n";
     o << "kind = " << q(p.kind) << "\n";
-    if (p.kind == "pressure" || p.kind == "body_pressure")
-      o << "position = " << v2(p.position) << "  # [m]\n";
+    const bool on_body = p.kind == "body_pressure" || p.kind == "body_displacement";
+    if (p.kind == "pressure" || on_body) o << "position = " << v2(p.position) << "  # [m]\n";
     if (p.kind == "water_height") o << "x = " << d(p.x) << "  # [m]\n";
-    if (p.kind == "body_pressure") o << "body = " << q(p.body) << "\n";
+    if (on_body) o << "body = " << q(p.body) << "\n";
   }
   return o.str();
 }

@@ -149,6 +149,12 @@ name = "bp"
 kind = "body_pressure"
 body = "cylinder"
 position = [0.5, 0.4]
+
+[[output.probe]]
+name = "tip"
+kind = "body_displacement"
+body = "plate"
+position = [0.8, 0.71]
 )";
 
 const std::string kMinimal = R"(schema_version = 1
@@ -275,12 +281,14 @@ TEST(IoCaseParse, FullCaseValues) {
   EXPECT_DOUBLE_EQ(c.output.probe_interval, 0.001);
   EXPECT_FALSE(c.output.vtk);
   EXPECT_EQ(c.output.plot, "cylinder_entry");
-  ASSERT_EQ(c.output.probes.size(), 4u);
+  ASSERT_EQ(c.output.probes.size(), 5u);
   EXPECT_EQ(c.output.probes[1].name, "surge_front_1");
   EXPECT_EQ(c.output.probes[1].kind, "surge_front");
   EXPECT_DOUBLE_EQ(c.output.probes[2].x, 0.2);
   EXPECT_EQ(c.output.probes[3].body, "cylinder");
   expect_vec(c.output.probes[3].position, {0.5, 0.4});
+  EXPECT_EQ(c.output.probes[4].kind, "body_displacement");
+  EXPECT_EQ(c.output.probes[4].body, "plate");
 }
 
 TEST(IoCaseParse, DefaultsFilled) {

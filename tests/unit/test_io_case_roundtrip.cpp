@@ -186,6 +186,11 @@ kind = "body_pressure"
 body = "skin"
 position = [1.5, 1.3]
 [[output.probe]]
+name = "skin_disp"
+kind = "body_displacement"
+body = "skin"
+position = [1.5, 1.3]
+[[output.probe]]
 kind = "water_height"
 x = 0.1
 )";
