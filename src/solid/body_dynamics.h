@@ -28,7 +28,8 @@ class Executor;
 void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* mat,
                 const NumericsConfig& num);
 
-// Δt_s = CFL · h / (c_s + max|v|) (spec §3) for elastic bodies; +inf for rigid kinds.
+// Δt_s = CFL · h / (c_s sqrt(1 + α_hg) + max|v|) (spec §3; α_hg the hourglass coefficient)
+// for elastic bodies; +inf for rigid kinds.
 double stable_time_step(const SolidBody& body);
 
 // Advances from t to t + dt holding body.f_fluid constant (see the header comment). Sets
