@@ -106,7 +106,6 @@ int Simulation::run() {
   double next_vtk = 0.0, next_probe = 0.0;
   std::vector<Vec2> peak(bodies_.size()), impulse(bodies_.size());
   std::vector<double> peak_mag(bodies_.size(), 0.0), peak_time(bodies_.size(), 0.0);
-  ForceHistory history;  // for the validation report
 
   auto record = [&](double dt_prev, const std::vector<BodyLoad>& prev) {
     if (forces) {
@@ -123,10 +122,6 @@ int Simulation::run() {
       if (norm(F) > peak_mag[b]) peak_mag[b] = norm(F), peak[b] = F, peak_time[b] = time_;
       if (dt_prev > 0.0) impulse[b] += 0.5 * dt_prev * (F + prev[b].total);
     }
-    history.time.push_back(time_);
-    std::vector<Vec2> fb;
-    for (const BodyLoad& l : loads_) fb.push_back(l.total);
-    history.force.push_back(fb);
   };
   auto record_probes = [&]() {
     if (!probes) return;
@@ -227,10 +222,9 @@ int Simulation::run() {
     loads.push_back(o);
   }
   summary.set("bodies", loads);
-  if (code == 0) {
+  if (code == 0 && out) {
     JsonObject validation;
-    if (validation_report(cfg_, bodies_, history, validation))
-      summary.set("validation", validation);
+    if (validation_report(cfg_, dir, validation)) summary.set("validation", validation);
   }
   if (out) summary.write_file(dir + "/summary.json");
   if (!opt_.quiet) {

@@ -1,0 +1,10 @@
+// `slamsph plot DIR`: draws the PNGs of a finished run from its CSVs and its resolved case.
+#pragma once
+#include <string>
+
+namespace slamsph {
+
+// Returns 0 on success, 2 if DIR is not a results folder, else the plot_results code.
+int plot_command(const std::string& out_dir);
+
+}  // namespace slamsph

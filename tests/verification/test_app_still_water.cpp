@@ -1,0 +1,37 @@
+// Still water (validation README §3): water 0.5 m deep in a tank, started hydrostatic,
+// must stay at rest: bottom pressure within 2 % of rho g (H - y_probe), and the largest
+// particle speed below 1 % of sqrt(g H) after settling. Reduced resolution (dx = 0.02 m).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/simulation.h"
+#include "io/case_file.h"
+
+using namespace slamsph;
+
+TEST(StillWater, StaysHydrostaticAndAtRest) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/still_water.toml");
+  cfg.numerics.dx = 0.02;
+  cfg.numerics.end_time = 1.0;
+  cfg.output.probes[0].position = {0.5, 0.01};  // half a spacing above the floor
+  Simulation sim(cfg, RunOptions{.threads = 2, .quiet = true});
+  const double g = 9.81, H = 0.5, rho = 1000.0;
+  double vmax_late = 0.0;
+  while (sim.time() < cfg.numerics.end_time) {
+    sim.step();
+    if (sim.time() > 0.5) {
+      for (const Vec2& v : sim.fluid().v) vmax_late = std::max(vmax_late, norm(v));
+    }
+  }
+  const double p_bottom = sim.probe_value(0);
+  const double expected = rho * g * (H - 0.01);
+  RecordProperty("p_bottom_Pa", std::to_string(p_bottom));
+  RecordProperty("vmax_over_sqrt_gH", std::to_string(vmax_late / std::sqrt(g * H)));
+  std::printf("bottom pressure %.1f Pa (expected %.1f, error %.2f %%), peak speed %.3g m/s = %.3f %% of sqrt(gH)\n",
+              p_bottom, expected, 100 * (p_bottom / expected - 1), vmax_late,
+              100 * vmax_late / std::sqrt(g * H));
+  EXPECT_NEAR(p_bottom / expected, 1.0, 0.02);
+  EXPECT_LT(vmax_late, 0.01 * std::sqrt(g * H));
+  EXPECT_EQ(sim.leaked_particles(), 0);
+}
