@@ -41,7 +41,10 @@ std::string d(double v) {
   return format_double(v);
 }
 std::string v2(Vec2 v) {
-  return "[" + d(v.x) + ", " + d(v.y) + "]";
+  // Built by append: GCC 12's -Wrestrict misfires on "literal" + std::string at -O3.
+  std::string s("[");
+  s.append(d(v.x)).append(", ").append(d(v.y)).append("]");
+  return s;
 }
 std::string b(bool v) {
   return v ? "true" : "false";
