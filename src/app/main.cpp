@@ -62,7 +62,7 @@ int run_command(int argc, char** argv) {
   if (cmd == "plot") return plot_command(path);
   CaseConfig cfg = load_case(path);
   if (cmd == "check") {
-    Simulation sim(std::move(cfg), RunOptions{.threads = 1, .quiet = true});
+    Simulation sim(std::move(cfg), silent_options(1));
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
     std::printf(")\n");

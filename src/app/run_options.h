@@ -14,4 +14,13 @@ struct RunOptions {
   bool write_output = true;         // false: no VTK/CSV (benchmarks)
 };
 
+// Options for driving a Simulation from code (tests, benchmarks): silent, no files.
+inline RunOptions silent_options(int threads) {
+  RunOptions o;
+  o.threads = threads;
+  o.quiet = true;
+  o.write_output = false;
+  return o;
+}
+
 }  // namespace slamsph

@@ -31,12 +31,6 @@ BodyKind body_kind(const std::string& k) {
   return BodyKind::RigidFixed;
 }
 
-std::string fmt(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 }  // namespace
 
 Simulation::Simulation(CaseConfig config, const RunOptions& options)
@@ -79,7 +73,6 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
       }
     }
   }
-  for (auto& p : fluid_.p) (void)p;
   evaluate_rates();
 }
 

@@ -52,7 +52,7 @@ struct MaterialConfig {
   double poisson_ratio = 0.0;  // [-]
   double av_alpha = 1.0;       // Monaghan artificial viscosity α [-] (spec §3)
   double av_beta = 0.0;        // Monaghan artificial viscosity β [-]
-  double hourglass = 0.0;      // hourglass control coefficient [-] (0 = off)
+  double hourglass = 0.1;      // hourglass control coefficient [-] (0 = off)
 };
 
 struct ShapeConfig {

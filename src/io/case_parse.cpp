@@ -192,7 +192,7 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
         num(m, "poisson_ratio", {-1.0, 0.5, true, true, "a Poisson ratio in (-1, 0.5)"}, 0.0);
     mc.av_alpha = num(m, "av_alpha", non_negative("an artificial-viscosity alpha >= 0"), 1.0);
     mc.av_beta = num(m, "av_beta", non_negative("an artificial-viscosity beta >= 0"), 0.0);
-    mc.hourglass = num(m, "hourglass", non_negative("an hourglass coefficient >= 0"), 0.0);
+    mc.hourglass = num(m, "hourglass", non_negative("an hourglass coefficient >= 0"), 0.1);
     out.push_back(mc);
     lines.push_back({name, m.line()});
   }

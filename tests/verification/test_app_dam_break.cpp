@@ -17,7 +17,7 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   const double a = 0.5, g = 9.81;
   const double t_end = 2.5 / std::sqrt(2 * g / a);
   cfg.numerics.end_time = t_end;
-  Simulation sim(cfg, RunOptions{.threads = 2, .quiet = true});
+  Simulation sim(cfg, silent_options(2));
   std::vector<double> t{0.0}, front{sim.probe_value(0)};
   while (sim.time() < t_end) {
     sim.step();

@@ -15,7 +15,7 @@ TEST(StillWater, StaysHydrostaticAndAtRest) {
   cfg.numerics.dx = 0.02;
   cfg.numerics.end_time = 1.0;
   cfg.output.probes[0].position = {0.5, 0.01};  // half a spacing above the floor
-  Simulation sim(cfg, RunOptions{.threads = 2, .quiet = true});
+  Simulation sim(cfg, silent_options(2));
   const double g = 9.81, H = 0.5, rho = 1000.0;
   double vmax_late = 0.0;
   while (sim.time() < cfg.numerics.end_time) {
