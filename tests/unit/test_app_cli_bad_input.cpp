@@ -1,0 +1,328 @@
+// The slamsph binary on bad input (README "Exit codes", docs/case_format.md "Errors"): every
+// class of case-file error and every bad command line exits 2 with one message on stderr
+// that names the file, the line and the key, writes nothing to stdout and creates no output
+// folder. A good case passes `slamsph check` with exit 0.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A tiny valid case: 100 water particles in a tank. Line numbers matter to the tests below.
+const char* kGood =
+    "schema_version = 1\n"      // 1
+    "name = \"tiny\"\n"         // 2
+    "\n"                        // 3
+    "[numerics]\n"              // 4
+    "dx = 0.05\n"               // 5
+    "end_time = 0.05\n"         // 6
+    "[numerics.domain]\n"       // 7
+    "min = [-0.5, -0.5]\n"      // 8
+    "max = [1.5, 1.5]\n"        // 9
+    "\n"                        // 10
+    "[fluid]\n"                 // 11
+    "sound_speed = 20.0\n"      // 12
+    "[[fluid.block]]\n"         // 13
+    "min = [0.0, 0.0]\n"        // 14
+    "max = [0.5, 0.5]\n"        // 15
+    "\n"                        // 16
+    "[[body]]\n"                // 17
+    "name = \"tank\"\n"         // 18
+    "kind = \"rigid_fixed\"\n"  // 19
+    "[body.shape]\n"            // 20
+    "type = \"tank\"\n"         // 21
+    "min = [0.0, 0.0]\n"        // 22
+    "max = [1.0, 1.0]\n";       // 23
+
+// kGood with the first occurrence of `from` replaced by `to` (fails the test if absent).
+std::string edit(const std::string& from, const std::string& to) {
+  std::string s = kGood;
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the base case";
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
+struct CliResult {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A fresh temporary folder per test: work/ is the current directory of the binary, capture/
+// receives its stdout and stderr (so work/ can be checked for stray files).
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(fs::exists(SLAMSPH_BINARY)) << "build the slamsph target first";
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    root_ = fs::temp_directory_path() /
+            ("slamsph_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(work());
+    fs::create_directories(root_ / "capture");
+  }
+  void TearDown() override {
+    if (!HasFailure())
+      fs::remove_all(root_);
+    else
+      std::printf("kept %s for inspection\n", root_.c_str());
+  }
+  fs::path work() const { return root_ / "work"; }
+
+  void write_case(const std::string& name, const std::string& text) const {
+    std::ofstream(work() / name) << text;
+  }
+
+  CliResult run(const std::string& args) const {
+    const fs::path out = root_ / "capture" / "stdout.txt";
+    const fs::path err = root_ / "capture" / "stderr.txt";
+    const std::string cmd = "cd '" + work().string() + "' && '" + SLAMSPH_BINARY + "' " + args +
+                            " >'" + out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(cmd.c_str());
+    CliResult r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  // Files in work/ other than the case files we wrote.
+  std::vector<std::string> stray_files(const std::vector<std::string>& ours) const {
+    std::vector<std::string> stray;
+    for (const auto& e : fs::directory_iterator(work())) {
+      const std::string n = e.path().filename().string();
+      if (std::find(ours.begin(), ours.end(), n) == ours.end()) stray.push_back(n);
+    }
+    return stray;
+  }
+
+  fs::path root_;
+};
+
+struct BadCase {
+  const char* label;
+  std::string text;
+  int line;                       // expected line in "bad.toml:<line>:"
+  const char* key;                // expected key path after the line
+  std::vector<const char*> also;  // further fragments the message must contain
+};
+
+std::vector<BadCase> bad_cases() {
+  return {
+      {"malformed TOML (unclosed table header)",
+       edit("[numerics]\n", "[numerics\n"),
+       4,
+       "(toml syntax)",
+       {"expected valid TOML"}},
+      {"unknown key with a suggestion",
+       edit("sound_speed = 20.0", "sound_sped = 20.0"),
+       12,
+       "fluid.sound_sped",
+       {"unknown key", "did you mean 'sound_speed'"}},
+      {"unknown enumeration value with a suggestion",
+       edit("kind = \"rigid_fixed\"", "kind = \"rigid_fixd\""),
+       19,
+       "body[0].kind",
+       {"did you mean 'rigid_fixed'"}},
+      {"unknown key for the shape type",
+       edit("type = \"tank\"\n", "type = \"tank\"\nradius = 1\n"),
+       22,
+       "body[0].shape.radius",
+       {"unknown key"}},
+      {"missing required key (line of its table)",
+       edit("dx = 0.05\n", ""),
+       4,
+       "numerics.dx",
+       {"missing required key"}},
+      {"missing required key in an array of tables",
+       edit("type = \"tank\"\n", ""),
+       20,
+       "body[0].shape.type",
+       {"missing required key"}},
+      {"wrong type (string for a length)",
+       edit("dx = 0.05", "dx = \"small\""),
+       5,
+       "numerics.dx",
+       {"wrong type"}},
+      {"wrong type (number for a vector)",
+       edit("end_time = 0.05\n", "end_time = 0.05\ngravity = 9.81\n"),
+       7,
+       "numerics.gravity",
+       {"wrong type"}},
+      {"dx = 0", edit("dx = 0.05", "dx = 0.0"), 5, "numerics.dx", {"must be > 0"}},
+      {"dx < 0", edit("dx = 0.05", "dx = -0.05"), 5, "numerics.dx", {"must be > 0", "-0.05"}},
+      {"negative density",
+       edit("sound_speed = 20.0\n", "sound_speed = 20.0\ndensity = -1000.0\n"),
+       13,
+       "fluid.density",
+       {"-1000"}},
+      {"negative sound speed",
+       edit("sound_speed = 20.0", "sound_speed = -20.0"),
+       12,
+       "fluid.sound_speed",
+       {}},
+      {"h_over_dx out of range",
+       edit("dx = 0.05\n", "dx = 0.05\nh_over_dx = 5.0\n"),
+       6,
+       "numerics.h_over_dx",
+       {}},
+      {"domain with min >= max",
+       edit("max = [1.5, 1.5]", "max = [1.5, -0.6]"),
+       9,
+       "numerics.domain.max",
+       {"min < max"}},
+      {"fluid outside the tank",
+       edit("max = [0.5, 0.5]", "max = [1.2, 0.5]"),
+       15,
+       "fluid.block[0].max",
+       {"tank"}},
+      {"fluid outside the domain",
+       edit("max = [0.5, 0.5]", "max = [0.5, 1.7]"),
+       15,
+       "fluid.block[0].max",
+       {"domain"}},
+      {"no particles (no fluid block, no body)",
+       "schema_version = 1\nname = \"empty\"\n[numerics]\ndx = 0.05\nend_time = 0.05\n"
+       "[numerics.domain]\nmin = [-0.5, -0.5]\nmax = [1.5, 1.5]\n[fluid]\nsound_speed = 20.0\n",
+       1,
+       "case",
+       {"no particles"}},
+  };
+}
+
+TEST_F(CliTest, GoodCasePassesCheckAndRuns) {
+  write_case("good.toml", kGood);
+  const CliResult c = run("check good.toml");
+  EXPECT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("100 fluid particles"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("tank: "), std::string::npos) << c.out;
+  EXPECT_EQ(stray_files({"good.toml"}), std::vector<std::string>{}) << "check wrote files";
+  // The base of every bad case really runs, so the failures below are due to the edits.
+  const CliResult r = run("run good.toml --out out --threads 1 --max-steps 2 --quiet");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(work() / "out" / "summary.json"));
+}
+
+TEST_F(CliTest, BadCaseFilesExitTwoNamingFileLineKeyAndWriteNothing) {
+  for (const BadCase& bc : bad_cases()) {
+    SCOPED_TRACE(bc.label);
+    fs::remove_all(work());
+    fs::create_directories(work());
+    write_case("bad.toml", bc.text);
+    for (const char* cmd : {"run bad.toml --out out --threads 1", "check bad.toml"}) {
+      SCOPED_TRACE(cmd);
+      const CliResult r = run(cmd);
+      EXPECT_EQ(r.code, 2) << r.err;
+      const std::string where = "bad.toml:" + std::to_string(bc.line) + ": " + bc.key + ": ";
+      EXPECT_NE(r.err.find(where), std::string::npos) << "expected '" << where << "' in stderr:\n"
+                                                      << r.err;
+      for (const char* frag : bc.also)
+        EXPECT_NE(r.err.find(frag), std::string::npos) << "expected '" << frag << "' in:\n"
+                                                       << r.err;
+      EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one message:\n" << r.err;
+      EXPECT_EQ(r.out, "") << "nothing on stdout";
+      EXPECT_FALSE(fs::exists(work() / "out")) << "output folder created for bad input";
+      EXPECT_EQ(stray_files({"bad.toml"}), std::vector<std::string>{});
+    }
+  }
+}
+
+TEST_F(CliTest, MissingCaseFileExitsTwo) {
+  const CliResult r = run("run nowhere.toml --out out");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("nowhere.toml"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "out"));
+}
+
+TEST_F(CliTest, BadCommandLinesExitTwoAndWriteNothing) {
+  write_case("good.toml", kGood);
+  struct Bad {
+    const char* args;
+    const char* fragment;
+  };
+  const std::vector<Bad> bad{
+      {"frobnicate good.toml", "unknown command 'frobnicate'"},
+      {"", "usage"},
+      {"run", "missing CASE.toml"},
+      {"run good.toml --out out --threads 0", "--threads"},
+      {"run good.toml --out out --threads -2", "--threads"},
+      {"run good.toml --out out --threads 1.5", "--threads"},
+      {"run good.toml --out out --threads two", "--threads"},
+      {"run good.toml --out out --threads", "--threads: expected a value"},
+      {"run good.toml --out out --end-time -1", "--end-time"},
+      {"run good.toml --out out --end-time 0", "--end-time"},
+      {"run good.toml --out out --max-steps -1", "--max-steps"},
+      {"run good.toml --out out --bogus", "unknown option '--bogus'"},
+  };
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.args);
+    const CliResult r = run(b.args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(b.fragment), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(work() / "out"));
+    EXPECT_FALSE(fs::exists(work() / "results")) << "default output folder created";
+  }
+  EXPECT_EQ(run("--version").code, 0);
+  EXPECT_EQ(run("--help").code, 0);
+}
+
+// An elastic body too small to have a finite-particle neighbour set (one particle) is bad
+// input: exit 2, nothing written, the body named.
+const char* kTinyDisc =
+    "schema_version = 1\n"
+    "name = \"tiny disc\"\n"
+    "[numerics]\n"
+    "dx = 0.05\n"
+    "end_time = 0.05\n"
+    "[numerics.domain]\n"
+    "min = [-0.5, -0.5]\n"
+    "max = [1.5, 1.5]\n"
+    "[materials.m]\n"
+    "density = 1000.0\n"
+    "youngs_modulus = 1e6\n"
+    "[[body]]\n"
+    "name = \"d\"\n"
+    "material = \"m\"\n"
+    "[body.shape]\n"
+    "type = \"disc\"\n"
+    "centre = [0.5, 0.5]\n"
+    "radius = 0.01\n";  // line 18
+
+TEST_F(CliTest, DegenerateElasticBodyExitsTwoAndWritesNothing) {
+  write_case("bad.toml", kTinyDisc);
+  const CliResult r = run("run bad.toml --out out --threads 1");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("body 'd'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "out"));
+  EXPECT_EQ(stray_files({"bad.toml"}), std::vector<std::string>{});
+}
+
+// The README contract for the same error: the message should name file, line and key
+// (bad.toml:18: body[0].shape.radius). Today it is "error: body 'd': select_fpm_sets: ...",
+// thrown from setup_body after parsing. Enable when the parser or the driver adds the location.
+TEST_F(CliTest, DISABLED_DegenerateElasticBodyNamesFileLineAndKey) {
+  write_case("bad.toml", kTinyDisc);
+  const CliResult r = run("check bad.toml");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("bad.toml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("body[0].shape"), std::string::npos) << r.err;
+}
+
+}  // namespace
