@@ -52,12 +52,22 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
   contact_offset_.assign(bodies_.size() + 1, 0);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     contact_offset_[b + 1] = contact_offset_[b] + bodies_[b].size();
-  contact_.resize(contact_offset_.back());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (const GhostSpec& g : plan_ghost_layers(bodies_[b].X, ref_normals_[b], bodies_[b].dx,
+                                                kernel_c_.support()))
+      ghosts_.push_back({static_cast<std::uint32_t>(b), g});
+  contact_.resize(contact_offset_.back() + ghosts_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     for (std::size_t i = 0; i < bodies_[b].size(); ++i) {
       contact_.body[contact_offset_[b] + i] = static_cast<std::uint32_t>(b);
       contact_.local[contact_offset_[b] + i] = static_cast<std::uint32_t>(i);
     }
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const std::size_t c = contact_offset_.back() + g;
+    contact_.body[c] = ghosts_[g].body;
+    contact_.local[c] = ghosts_[g].spec.parent;
+    contact_.ghost[c] = 1;
+  }
   loads_.assign(bodies_.size(), BodyLoad{});
   // Probes attached to bodies follow the body particle nearest to their start position.
   attached_.assign(cfg_.output.probes.size(), AttachedProbe{});
@@ -149,6 +159,19 @@ void Simulation::gather_contact() {
       contact_.normal[o + i] = n;
     }
   }
+  // Ghosts follow their parent along its current normal (coupling/ghost_layers.h).
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const std::size_t c = contact_offset_.back() + g;
+    const SolidBody& body = bodies_[ghosts_[g].body];
+    const std::size_t parent = contact_offset_[ghosts_[g].body] + ghosts_[g].spec.parent;
+    const Vec2 n = contact_.normal[parent];
+    contact_.anchor[c] = contact_.x[parent];
+    contact_.x[c] = contact_.x[parent] - (ghosts_[g].spec.depth * body.dx) * n;
+    contact_.v[c] = contact_.v[parent];
+    contact_.a[c] = contact_.a[parent];
+    contact_.volume[c] = contact_.volume[parent];
+    contact_.normal[c] = n;
+  }
 }
 
 void Simulation::evaluate_rates() {
@@ -167,14 +190,20 @@ void Simulation::evaluate_rates() {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     SolidBody& body = bodies_[b];
     const std::size_t o = contact_offset_[b];
+    for (std::size_t i = 0; i < body.size(); ++i) body.f_fluid[i] = contact_.force[o + i];
+  }
+  // A ghost's force acts on its parent particle.
+  for (std::size_t g = 0; g < ghosts_.size(); ++g) {
+    const std::size_t c = contact_offset_.back() + g;
+    bodies_[ghosts_[g].body].f_fluid[ghosts_[g].spec.parent] += contact_.force[c];
+  }
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
     BodyLoad load;
-    for (std::size_t i = 0; i < body.size(); ++i) {
-      body.f_fluid[i] = contact_.force[o + i];
-      load.total += contact_.force[o + i];
-      load.viscous += contact_.force_viscous[o + i];
-    }
+    for (const Vec2& f : bodies_[b].f_fluid) load.total += f;
     loads_[b] = load;
   }
+  for (std::size_t c = 0; c < contact_.size(); ++c)
+    loads_[contact_.body[c]].viscous += contact_.force_viscous[c];
 }
 
 StepLimit Simulation::compute_step() const {

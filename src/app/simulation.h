@@ -19,6 +19,7 @@
 #include "core/kernel.h"
 #include "core/parallel.h"
 #include "coupling/contact_particles.h"
+#include "coupling/ghost_layers.h"
 #include "coupling/interaction_lists.h"
 #include "fluid/fluid_particles.h"
 #include "fluid/tait_eos.h"
@@ -83,6 +84,11 @@ class Simulation {
   std::vector<SolidBody> bodies_;
   std::vector<std::vector<Vec2>> ref_normals_;
   std::vector<std::size_t> contact_offset_;  // first contact index of each body
+  struct Ghost {
+    std::uint32_t body;
+    GhostSpec spec;
+  };
+  std::vector<Ghost> ghosts_;  // stored after all real contact particles
   ContactParticles contact_;
   std::unique_ptr<InteractionLists> lists_;
   std::vector<BodyLoad> loads_;

@@ -22,13 +22,21 @@ struct ContactParticles {
   std::vector<Vec2> force;          // total fluid force on the particle [N/m]
   std::vector<Vec2> force_viscous;  // its viscous part [N/m]
   std::vector<std::uint32_t> body;  // owning body index
-  std::vector<std::uint32_t> local; // index inside the body
+  std::vector<std::uint32_t> local; // index inside the body (a ghost: its parent's index)
+  // Ghost layers of thin bodies (coupling/ghost_layers.h): a ghost acts only on fluid
+  // particles on its parent's side, dot(x_f - anchor, normal) > 0; anchor = parent position.
+  std::vector<std::uint8_t> ghost;
+  std::vector<Vec2> anchor;
 
   std::size_t size() const { return x.size(); }
+  // Whether fluid particle at xf may interact with contact particle s.
+  bool faces(std::size_t s, Vec2 xf) const {
+    return !ghost[s] || dot(xf - anchor[s], normal[s]) > 0.0;
+  }
   void resize(std::size_t n) {
     x.resize(n); v.resize(n); a.resize(n); volume.resize(n); p.resize(n); rho.resize(n);
     v_noslip.resize(n); wetted.resize(n); normal.resize(n); force.resize(n); force_viscous.resize(n);
-    body.resize(n); local.resize(n);
+    body.resize(n); local.resize(n); ghost.resize(n); anchor.resize(n);
   }
 };
 

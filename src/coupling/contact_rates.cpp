@@ -22,7 +22,7 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
     double drho = 0.0;
     for (std::uint32_t k = b; k < e; ++k) {
       const std::uint32_t s = fc.index[k];
-      if (!c.wetted[s]) continue;
+      if (!c.wetted[s] || !c.faces(s, f.x[i])) continue;
       const ContactPairResult r =
           contact_pair<kViscous>(pair_input(f, i, c, s), kernel, prm.c0, prm.omega, prm.viscosity);
       if (!r.active) continue;
@@ -42,6 +42,7 @@ void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList&
     if (c.wetted[s]) {
       for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
         const std::uint32_t i = cf.index[k];
+        if (!c.faces(s, f.x[i])) continue;
         const ContactPairResult r = contact_pair<kViscous>(pair_input(f, i, c, s), kernel, prm.c0,
                                                            prm.omega, prm.viscosity);
         if (!r.active) continue;

@@ -13,6 +13,7 @@ void compute_virtual_state(ContactParticles& c, const FluidParticles& f, const N
     const Vec2 xs = c.x[s];
     for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
       const std::uint32_t j = cf.index[k];
+      if (!c.faces(s, f.x[j])) continue;
       const Vec2 r = xs - f.x[j];
       const double w = kernel.w(std::sqrt(norm2(r)));
       if (w <= 0.0) continue;

@@ -1,0 +1,33 @@
+// Ghost layers behind thin bodies (spec §4, "thin structures").
+//
+// The GSPH pair force of a fluid particle against a boundary only balances a uniform
+// pressure when the boundary fills the particle's kernel support: with a skin thinner
+// than the support, sum_j V_j grad W_ij over fluid and skin no longer vanishes and the
+// pressure pushes the fluid *into* the skin, which then leaks. Thick bodies (the tank's
+// 4 wall layers, a disc) fill the support; for every surface particle of a body that does
+// not, we add ghost contact particles at x_s - k d n_s (k = k_present+1 .. K, d the body
+// spacing, n_s the current outward normal, K = ceil(support/d)), carrying the parent's
+// velocity, acceleration and volume. A ghost acts only on fluid on its parent's side
+// (ContactParticles::faces), so a skin wetted on both sides gets a full support from
+// each side, and its forces are returned to the parent (momentum stays exact).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/vec.h"
+
+namespace slamsph {
+
+struct GhostSpec {
+  std::uint32_t parent = 0;  // particle index in the body
+  int depth = 0;             // k: ghost at x - k d n
+};
+
+// From the reference configuration: for each particle with a non-zero normal, count the
+// body layers present behind it (a body particle within 0.75 d of X - k d N for k = 1, 2,
+// ...) and add ghosts for the missing depths up to K = ceil(support / d).
+std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
+                                         const std::vector<Vec2>& normals, double d,
+                                         double support);
+
+}  // namespace slamsph
