@@ -11,12 +11,13 @@
 #include "app/simulation.h"
 #include "core/error.h"
 #include "io/case_file.h"
+#include "io/case_resolution.h"
 
 namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N] [--quiet]\n                [--no-output]\n"
+    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N]\n                [--dx DX] [--quiet] [--no-output]\n"
     "  slamsph check CASE.toml      validate a case file and print its particle counts\n"
     "  slamsph plot DIR             (re)draw the PNG plots of a finished run in DIR\n"
     "  slamsph --version | --help\n";
@@ -55,12 +56,16 @@ int run_command(int argc, char** argv) {
       if (n < 0 || n != static_cast<long>(n))
         throw InputError("command line: --max-steps: expected a non-negative integer");
       opt.max_steps = static_cast<long>(n);
+    } else if (a == "--dx") {
+      opt.dx = parse_number(a, value());
+      if (!(*opt.dx > 0.0)) throw InputError("command line: --dx: expected a positive length in m");
     } else if (a == "--quiet") opt.quiet = true;
     else if (a == "--no-output") opt.write_output = false;
     else throw InputError("command line: unknown option '" + a + "'\n" + kUsage);
   }
   if (cmd == "plot") return plot_command(path);
   CaseConfig cfg = load_case(path);
+  if (opt.dx) rescale_resolution(cfg, *opt.dx);
   if (cmd == "check") {
     Simulation sim(std::move(cfg), silent_options(1));
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());

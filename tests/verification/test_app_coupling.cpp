@@ -8,6 +8,7 @@
 
 #include "app/simulation.h"
 #include "io/case_file.h"
+#include "io/case_resolution.h"
 
 using namespace slamsph;
 
@@ -139,7 +140,7 @@ TEST(Coupling, DualTimeSteppingMatchesGlobalStep) {
   auto run = [](bool dual, double& seconds) {
     CaseConfig cfg =
         load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/elastic_cylinder_entry.toml");
-    cfg.numerics.dx = 0.01;
+    rescale_resolution(cfg, 0.01);
     cfg.numerics.end_time = 0.005;
     cfg.numerics.dual_time_stepping = dual;
     Simulation sim(cfg, silent_options(1));

@@ -7,13 +7,14 @@
 
 #include "app/simulation.h"
 #include "io/case_file.h"
+#include "io/case_resolution.h"
 #include "io/reference_curves.h"
 
 using namespace slamsph;
 
 TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/dam_break.toml");
-  cfg.numerics.dx = 0.02;
+  rescale_resolution(cfg, 0.02);
   const double a = 0.5, g = 9.81;
   const double t_end = 2.5 / std::sqrt(2 * g / a);
   cfg.numerics.end_time = t_end;

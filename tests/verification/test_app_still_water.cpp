@@ -7,12 +7,13 @@
 
 #include "app/simulation.h"
 #include "io/case_file.h"
+#include "io/case_resolution.h"
 
 using namespace slamsph;
 
 TEST(StillWater, StaysHydrostaticAndAtRest) {
   CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/still_water.toml");
-  cfg.numerics.dx = 0.02;
+  rescale_resolution(cfg, 0.02);
   cfg.numerics.end_time = 1.0;
   cfg.output.probes[0].position = {0.5, 0.01};  // half a spacing above the floor
   Simulation sim(cfg, silent_options(2));
