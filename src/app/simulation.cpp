@@ -179,7 +179,7 @@ void Simulation::evaluate_rates() {
   lists_->update(fluid_, contact_, exec_);
   const NumericsConfig& num = cfg_.numerics;
   const GsphParams gp{eos_.c0, cfg_.fluid.limiter_omega, cfg_.fluid.viscosity, num.gravity};
-  const ContactParams cp{eos_.c0, cfg_.fluid.limiter_omega, cfg_.fluid.viscosity};
+  const ContactParams cp{eos_.c0, cfg_.fluid.limiter_omega, cfg_.fluid.viscosity, num.gravity};
   if (fluid_.size() > 0) {
     compute_virtual_state(contact_, fluid_, lists_->cf(), kernel_c_, eos_, num.gravity, exec_);
     compute_gsph_fluid_rates(fluid_, lists_->ff(), kernel_f_, gp, exec_);

@@ -24,6 +24,7 @@ struct ContactPairInput {
   double rhoi, pi, Vi;
   Vec2 xs, vs, vs_noslip;
   double rhos, ps, Vs;
+  Vec2 g_rel;  // gravity minus the solid's acceleration (the static state of p', spec §4)
 };
 
 template <bool kViscous>
@@ -40,7 +41,8 @@ inline ContactPairResult contact_pair(const ContactPairInput& in, const Kernel& 
   const Vec2 e = dx * (-1.0 / r);
   const RiemannState L{in.rhoi, dot(in.vi, e), in.pi};
   const RiemannState R{in.rhos, dot(in.vs, e), in.ps};
-  const RiemannStar s = solve_riemann(L, R, c0, omega);
+  const double dp_static = 0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);
+  const RiemannStar s = solve_riemann(L, R, c0, omega, dp_static);
   out.force = (-2.0 * in.Vi * in.Vs * s.p * dwr) * dx;
   out.drho_term = in.Vs * (L.u - s.u) * (-dwr * r);
   if constexpr (kViscous) {

@@ -16,6 +16,7 @@ struct ContactParams {
   double c0 = 0.0;
   double omega = 3.0;
   double viscosity = 0.0;  // kinematic [m^2/s]; no-slip viscous term only if > 0
+  Vec2 gravity;            // [m/s^2], for the static state in the Riemann U* (riemann_solver.h)
 };
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,

@@ -34,7 +34,8 @@ void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel
       const double rhoj = rho[j];
       const RiemannState L{rhoi, dot(vi, e), pi};
       const RiemannState R{rhoj, dot(v[j], e), p[j]};
-      const RiemannStar s = solve_riemann(L, R, prm.c0, prm.omega);
+      const double dp_static = 0.5 * (rhoi + rhoj) * dot(prm.gravity, dx);
+      const RiemannStar s = solve_riemann(L, R, prm.c0, prm.omega, dp_static);
       const double vj_over = m[j] / rhoj;  // V_j
       // (v_i - v*) . grad W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r
       drho += vj_over * (L.u - s.u) * (-dwr * r);

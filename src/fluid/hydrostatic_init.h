@@ -1,5 +1,6 @@
 // Water at rest starts in hydrostatic equilibrium (no start-up shock), spec §2:
-// p = rho0 |g| (surface - y), rho from the inverse Tait EOS, m = rho dx^2.
+// dp/dz = rho(p) |g| integrated exactly for the Tait EOS below `surface`, rho from the
+// inverse EOS, m = rho dx^2.
 #pragma once
 #include <vector>
 
