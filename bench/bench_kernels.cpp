@@ -35,8 +35,13 @@ void BM_NeighbourListBuild(benchmark::State& st) {
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
-BENCHMARK(BM_NeighbourListBuild)->Args({200, 1})->Args({200, 2})->Args({800, 1})->Args({800, 2})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_NeighbourListBuild)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Args({800, 1})
+    ->Args({800, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void BM_GsphFluidRates(benchmark::State& st) {
   const double dx = 0.0025;
@@ -57,8 +62,13 @@ void BM_GsphFluidRates(benchmark::State& st) {
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
-BENCHMARK(BM_GsphFluidRates)->Args({200, 1})->Args({200, 2})->Args({800, 1})->Args({800, 2})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GsphFluidRates)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Args({800, 1})
+    ->Args({800, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 

@@ -20,6 +20,6 @@ for spec in "0.025 4000" "0.0025 400"; do
       n=$(echo "$line" | sed -E 's/.*fluid particles: ([0-9]+).*/\1/')
     done
     med=$(printf "%s\n" "${rates[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
-    printf "%-10s %-8s %-12s %.3f\n" "$1" "$th" "$n" "$(echo "$med / 1000000" | bc -l)"
+    printf "%-10s %-8s %-12s %s\n" "$1" "$th" "$n" "$(awk -v m="$med" 'BEGIN {printf "%.3f", m / 1e6}')"
   done
 done

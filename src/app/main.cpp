@@ -17,7 +17,8 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N]\n                [--dx DX] [--quiet] [--no-output]\n"
+    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N]\n            "
+    "    [--dx DX] [--quiet] [--no-output]\n"
     "  slamsph check CASE.toml      validate a case file and print its particle counts\n"
     "  slamsph plot DIR             (re)draw the PNG plots of a finished run in DIR\n"
     "  slamsph --version | --help\n";
@@ -42,7 +43,8 @@ int run_command(int argc, char** argv) {
       if (k + 1 >= argc) throw InputError("command line: " + a + ": expected a value");
       return argv[++k];
     };
-    if (a == "--out") opt.out_dir = value();
+    if (a == "--out")
+      opt.out_dir = value();
     else if (a == "--threads") {
       const double n = parse_number(a, value());
       if (n < 1 || n != static_cast<int>(n))
@@ -59,9 +61,12 @@ int run_command(int argc, char** argv) {
     } else if (a == "--dx") {
       opt.dx = parse_number(a, value());
       if (!(*opt.dx > 0.0)) throw InputError("command line: --dx: expected a positive length in m");
-    } else if (a == "--quiet") opt.quiet = true;
-    else if (a == "--no-output") opt.write_output = false;
-    else throw InputError("command line: unknown option '" + a + "'\n" + kUsage);
+    } else if (a == "--quiet")
+      opt.quiet = true;
+    else if (a == "--no-output")
+      opt.write_output = false;
+    else
+      throw InputError("command line: unknown option '" + a + "'\n" + kUsage);
   }
   if (cmd == "plot") return plot_command(path);
   CaseConfig cfg = load_case(path);

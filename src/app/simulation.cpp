@@ -53,8 +53,8 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     contact_offset_[b + 1] = contact_offset_[b] + bodies_[b].size();
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    for (const GhostSpec& g : plan_ghost_layers(bodies_[b].X, ref_normals_[b], bodies_[b].dx,
-                                                kernel_c_.support()))
+    for (const GhostSpec& g :
+         plan_ghost_layers(bodies_[b].X, ref_normals_[b], bodies_[b].dx, kernel_c_.support()))
       ghosts_.push_back({static_cast<std::uint32_t>(b), g});
   contact_.resize(contact_offset_.back() + ghosts_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -303,8 +303,8 @@ void Simulation::check_state() const {
       else if (!std::isfinite(fluid_.rho[i]))
         os << "density is not finite";
       else
-        os << "left the domain at (" << x.x << ", " << x.y << ") m with velocity ("
-           << fluid_.v[i].x << ", " << fluid_.v[i].y << ") m/s";
+        os << "left the domain at (" << x.x << ", " << x.y << ") m with velocity (" << fluid_.v[i].x
+           << ", " << fluid_.v[i].y << ") m/s";
       os << "; last step " << limit_.dt << " s limited by " << limit_.limiter;
       throw DivergenceError(os.str());
     }
@@ -319,7 +319,7 @@ void Simulation::check_state() const {
       std::ostringstream os;
       os << "body '" << b.name << "' particle " << i << " at t = " << time_ << " s: "
          << (std::isfinite(x.x) && std::isfinite(x.y) ? "left the domain"
-                                                       : "position/velocity is not finite")
+                                                      : "position/velocity is not finite")
          << "; last step " << limit_.dt << " s limited by " << limit_.limiter;
       throw DivergenceError(os.str());
     }
@@ -395,7 +395,8 @@ std::vector<double> Simulation::probe_row() const {
 
 double Simulation::probe_value(std::size_t k) const {
   std::size_t col = 0;
-  for (std::size_t q = 0; q < k; ++q) col += cfg_.output.probes[q].kind == "body_displacement" ? 2 : 1;
+  for (std::size_t q = 0; q < k; ++q)
+    col += cfg_.output.probes[q].kind == "body_displacement" ? 2 : 1;
   return probe_row()[col];
 }
 

@@ -34,8 +34,8 @@ struct StepLimit {
 };
 
 struct BodyLoad {
-  Vec2 total;     // fluid force on the body [N/m]
-  Vec2 viscous;   // its viscous part [N/m]
+  Vec2 total;    // fluid force on the body [N/m]
+  Vec2 viscous;  // its viscous part [N/m]
 };
 
 class Simulation {

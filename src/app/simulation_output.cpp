@@ -144,8 +144,8 @@ int Simulation::run() {
       }
       if (M > 0.0) c = c / M, v = v / M, a = a / M;
       const BodyEnergies e = body_energies(b);
-      row.insert(row.end(), {c.x, c.y, v.x, v.y, a.x, a.y, e.kinetic, e.strain, e.dissipated,
-                             e.hourglass});
+      row.insert(row.end(),
+                 {c.x, c.y, v.x, v.y, a.x, a.y, e.kinetic, e.strain, e.dissipated, e.hourglass});
     }
     bodies_csv->row(row);
   };
@@ -187,8 +187,7 @@ int Simulation::run() {
     }
   }
   progress.finish();
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (forces) forces->flush();
   if (probes) probes->flush();
   if (bodies_csv) bodies_csv->flush();

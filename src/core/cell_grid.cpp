@@ -32,8 +32,7 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
   start_.assign(ncell + 1, 0);
   std::vector<std::uint32_t> cell_of(pts.size());
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const std::uint32_t c =
-        static_cast<std::uint32_t>(cell_y(pts[i].y)) * nx_ + cell_x(pts[i].x);
+    const std::uint32_t c = static_cast<std::uint32_t>(cell_y(pts[i].y)) * nx_ + cell_x(pts[i].x);
     cell_of[i] = c;
     ++start_[c + 1];
   }
@@ -43,8 +42,8 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
 }
 
 void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
-                          const CellGrid& grid, double radius, bool skip_self,
-                          const Executor& exec, NeighbourList& out) {
+                          const CellGrid& grid, double radius, bool skip_self, const Executor& exec,
+                          NeighbourList& out) {
   const std::size_t n = queries.size();
   const double r2 = radius * radius;
   out.start.assign(n + 1, 0);
@@ -68,7 +67,12 @@ void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> p
       if (skip_self && j == i) return;
       if (norm2(q - pts[j]) < r2) dst[k++] = j;
     });
-    std::sort(dst, dst + k);
+  });
+}
+
+void sort_each_list(NeighbourList& list, const Executor& exec) {
+  exec.for_each(list.size(), [&](std::size_t i) {
+    std::sort(list.index.begin() + list.start[i], list.index.begin() + list.start[i + 1]);
   });
 }
 

@@ -16,10 +16,13 @@ class CellGrid {
   void build(std::span<const Vec2> pts, double cell);
 
   // Calls f(j) for every binned point j in the 3x3 cells around p (a superset of the
-  // points within `cell` of p). Points outside the grid are clamped to the border cells.
+  // points within `cell` of p). Points just outside the grid use the border cells.
   template <class F>
   void for_each_candidate(Vec2 p, F&& f) const {
     if (sorted_.empty()) return;
+    // A point more than one cell outside the grid has no candidates.
+    const double fx = (p.x - lo_.x) * inv_cell_, fy = (p.y - lo_.y) * inv_cell_;
+    if (!(fx >= -1.0 && fx < nx_ + 1.0 && fy >= -1.0 && fy < ny_ + 1.0)) return;
     const int cx = cell_x(p.x), cy = cell_y(p.y);
     for (int jy = cy - 1; jy <= cy + 1; ++jy) {
       if (jy < 0 || jy >= ny_) continue;
@@ -66,10 +69,13 @@ class Executor;
 
 // For every query point, the grid points strictly closer than `radius` (radius <= cell
 // size). With `skip_self`, query i does not list point i (queries and points the same
-// set). Neighbours appear in ascending index order, so the list is independent of the
-// thread count and of the binning.
+// set). Neighbours appear in cell order (the serial binning's order), so the list is
+// independent of the thread count.
 void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
-                          const CellGrid& grid, double radius, bool skip_self,
-                          const Executor& exec, NeighbourList& out);
+                          const CellGrid& grid, double radius, bool skip_self, const Executor& exec,
+                          NeighbourList& out);
+
+// Sorts every list ascending (for algorithms that search the lists, e.g. pair reversal).
+void sort_each_list(NeighbourList& list, const Executor& exec);
 
 }  // namespace slamsph

@@ -1,6 +1,7 @@
 // Smoothing kernels (spec §1): Wendland C2 (default) and the cubic B-spline, both with
 // support radius 2h and 2D normalisation. A Kernel is a small value, passed explicitly.
 #pragma once
+#include <algorithm>
 #include <numbers>
 #include <string>
 
@@ -46,15 +47,24 @@ class Kernel {
 
   // dW/dr divided by r (finite at r -> 0 for both kernels); saves a division in pair loops.
   double dw_over_r(double r) const {
+    return type_ == KernelType::WendlandC2 ? dw_over_r_as<KernelType::WendlandC2>(r)
+                                           : dw_over_r_as<KernelType::CubicSpline>(r);
+  }
+
+  // The same with the kernel type fixed at compile time (hot loops dispatch once).
+  template <KernelType T>
+  double dw_over_r_as(double r) const {
     const double q = r * inv_h_;
-    if (q >= 2.0) return 0.0;
-    if (type_ == KernelType::WendlandC2) {
-      const double t = 1.0 - 0.5 * q;
+    if constexpr (T == KernelType::WendlandC2) {
+      // Branch-free: zero beyond the support through the clamp.
+      const double t = std::max(0.0, 1.0 - 0.5 * q);
       return norm_ * inv_h_ * inv_h_ * (-5.0) * t * t * t;
+    } else {
+      if (q >= 2.0) return 0.0;
+      if (q < 1.0) return norm_ * inv_h_ * inv_h_ * (-3.0 + 2.25 * q);
+      const double t = 2.0 - q;
+      return q > 0.0 ? norm_ * inv_h_ * (-0.75 * t * t) / r : 0.0;
     }
-    if (q < 1.0) return norm_ * inv_h_ * inv_h_ * (-3.0 + 2.25 * q);
-    const double t = 2.0 - q;
-    return q > 0.0 ? norm_ * inv_h_ * (-0.75 * t * t) / r : 0.0;
   }
 
  private:

@@ -34,7 +34,8 @@ class Executor {
 
   // max over i of g(i); returns `init` for n == 0. Max is order-independent, hence exact.
   template <class G>
-  double max_of(std::size_t n, G&& g, double init = -std::numeric_limits<double>::infinity()) const {
+  double max_of(std::size_t n, G&& g,
+                double init = -std::numeric_limits<double>::infinity()) const {
     double m = init;
     const long long count = static_cast<long long>(n);
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m) if (count > 256)

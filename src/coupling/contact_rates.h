@@ -22,8 +22,7 @@ struct ContactParams {
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
                           const Kernel& kernel, const ContactParams& prm, const Executor& exec);
 
-void compute_contact_reaction(ContactParticles& c, const FluidParticles& f,
-                              const NeighbourList& cf, const Kernel& kernel,
-                              const ContactParams& prm, const Executor& exec);
+void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
+                              const Kernel& kernel, const ContactParams& prm, const Executor& exec);
 
 }  // namespace slamsph

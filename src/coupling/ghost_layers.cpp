@@ -17,7 +17,8 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
   auto occupied = [&](Vec2 p) {
     bool found = false;
     grid.for_each_candidate(p, [&](std::uint32_t j) {
-      if (norm2(X[j] - p) < 0.5625 * d * d) found = true;  // within 0.75 d: tolerant of offset ring layers
+      if (norm2(X[j] - p) < 0.5625 * d * d)
+        found = true;  // within 0.75 d: tolerant of offset ring layers
     });
     return found;
   };
@@ -26,8 +27,7 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
     if (norm2(n) == 0.0) continue;
     int present = 0;
     while (present < K && occupied(X[i] - (present + 1) * d * n)) ++present;
-    for (int k = present + 1; k <= K; ++k)
-      out.push_back({static_cast<std::uint32_t>(i), k});
+    for (int k = present + 1; k <= K; ++k) out.push_back({static_cast<std::uint32_t>(i), k});
   }
   return out;
 }

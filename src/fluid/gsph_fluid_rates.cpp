@@ -1,5 +1,6 @@
 #include "fluid/gsph_fluid_rates.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fluid/riemann_solver.h"
@@ -8,48 +9,66 @@ namespace slamsph {
 
 namespace {
 
-template <bool kViscous>
-void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+// The hot loop of the solver. solve_riemann() is written out with its divisions hoisted
+// (tests/unit/test_fluid_momentum.cpp checks it against the plain formulas through the
+// conservation and uniform-state tests; riemann_solver.h is the reference).
+template <bool kViscous, KernelType kType>
+void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel_in,
                 const GsphParams& prm, const Executor& exec) {
+  const Kernel kernel = kernel_in;  // a local copy keeps its constants in registers
   const double support2 = kernel.support() * kernel.support();
   const double eta2 = 0.01 * kernel.h() * kernel.h();  // Morris regulariser
+  const double c0 = prm.c0, inv_c0 = 1.0 / prm.c0, omega = prm.omega;
+  const Vec2 g = prm.gravity;
   const Vec2* x = f.x.data();
   const Vec2* v = f.v.data();
   const double* rho = f.rho.data();
   const double* p = f.p.data();
-  const double* m = f.m.data();
+  exec.for_each(f.size(), [&](std::size_t i) { f.volume[i] = f.m[i] / f.rho[i]; });
+  const double* V = f.volume.data();
   exec.for_each(f.size(), [&](std::size_t i) {
     const Vec2 xi = x[i], vi = v[i];
-    const double rhoi = rho[i], pi = p[i];
+    const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi;
     Vec2 acc;
     double drho = 0.0;
     for (std::uint32_t k = ff.start[i]; k < ff.start[i + 1]; ++k) {
       const std::uint32_t j = ff.index[k];
       const Vec2 dx = xi - x[j];
       const double r2 = norm2(dx);
-      if (r2 >= support2 || r2 == 0.0) continue;
-      const double r = std::sqrt(r2);
-      const double dwr = kernel.dw_over_r(r);  // grad_i W_ij = dwr * dx
-      const Vec2 e = dx * (-1.0 / r);          // from i to j
+      if (r2 >= support2 || r2 == 0.0) continue;  // the lists carry a skin
+      const double r = std::sqrt(r2), inv_r = 1.0 / r;
+      const double dwr = kernel.dw_over_r_as<kType>(r);  // grad_i W_ij = dwr * dx
       const double rhoj = rho[j];
-      const RiemannState L{rhoi, dot(vi, e), pi};
-      const RiemannState R{rhoj, dot(v[j], e), p[j]};
-      const double dp_static = 0.5 * (rhoi + rhoj) * dot(prm.gravity, dx);
-      const RiemannStar s = solve_riemann(L, R, prm.c0, prm.omega, dp_static);
-      const double vj_over = m[j] / rhoj;  // V_j
+      // Riemann problem along e_ij = -dx / r (spec §2; riemann_solver.h).
+      const double uL = -dot(vi, dx) * inv_r, uR = -dot(v[j], dx) * inv_r;
+      const double inv_sum = 1.0 / (rhoi + rhoj);
+      const double du = uL - uR;
+      const double beta = std::min(omega * std::max(du, 0.0), c0);
+      const double dp_static = 0.5 * (rhoi + rhoj) * dot(g, dx);
+      const double us = (rhoi * uL + rhoj * uR + (pi - p[j] - dp_static) * inv_c0) * inv_sum;
+      const double ps = (rhoj * pi + rhoi * p[j] + beta * rhoi * rhoj * du) * inv_sum;
       // (v_i - v*) . grad W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r
-      drho += vj_over * (L.u - s.u) * (-dwr * r);
-      acc += (-2.0 * m[j] * s.p / (rhoi * rhoj) * dwr) * dx;
+      drho -= V[j] * (uL - us) * dwr * r;
+      acc += (-2.0 * V[j] * ps * inv_rhoi * dwr) * dx;
       if constexpr (kViscous) {
         // Morris et al. 1997: sum m_j (mu_i + mu_j)/(rho_i rho_j) (r.gradW)/(r^2+eta^2) v_ij
-        const double coef = m[j] * prm.viscosity * (rhoi + rhoj) / (rhoi * rhoj) * dwr * r2 /
-                            (r2 + eta2);
+        const double coef =
+            V[j] * prm.viscosity * (rhoi + rhoj) * inv_rhoi * dwr * r2 / (r2 + eta2);
         acc += coef * (vi - v[j]);
       }
     }
     f.drho[i] = 2.0 * rhoi * drho;
-    f.a[i] = acc + prm.gravity;
+    f.a[i] = acc + g;
   });
+}
+
+template <bool kViscous>
+void dispatch_kernel(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+                     const GsphParams& prm, const Executor& exec) {
+  if (kernel.type() == KernelType::WendlandC2)
+    rates_impl<kViscous, KernelType::WendlandC2>(f, ff, kernel, prm, exec);
+  else
+    rates_impl<kViscous, KernelType::CubicSpline>(f, ff, kernel, prm, exec);
 }
 
 }  // namespace
@@ -57,9 +76,9 @@ void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel
 void compute_gsph_fluid_rates(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec) {
   if (prm.viscosity > 0.0)
-    rates_impl<true>(f, ff, kernel, prm, exec);
+    dispatch_kernel<true>(f, ff, kernel, prm, exec);
   else
-    rates_impl<false>(f, ff, kernel, prm, exec);
+    dispatch_kernel<false>(f, ff, kernel, prm, exec);
 }
 
 }  // namespace slamsph

@@ -11,8 +11,8 @@
 //
 // Hydrostatic correction (our addition, docs/model.md §2): the (p_L - p_R)/c0 term of U*
 // diffuses pressure. Under gravity the rest state has p_L - p_R = dp_static =
-// rho_avg g . (x_i - x_j) != 0 (grad p = rho g), and that diffusion then pumps mass into the free-surface
-// layer, which has no neighbour above: still water starts to move (measured: spurious
+// rho_avg g . (x_i - x_j) != 0 (grad p = rho g), and that diffusion then pumps mass into the
+// free-surface layer, which has no neighbour above: still water starts to move (measured: spurious
 // speeds ~7 % of sqrt(gH) after 1 s without the correction). As in the hydrostatic
 // correction of delta-SPH density diffusion (Antuono et al. 2012), U* uses the
 // difference from the static state, (p_L - p_R - dp_static)/c0. p* is unchanged.

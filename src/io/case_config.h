@@ -17,22 +17,22 @@ struct Box {
 };
 
 struct NumericsConfig {
-  double dx = 0.0;                 // fluid particle spacing [m] (required)
-  double h_over_dx = 1.3;          // smoothing length ratio [-]
+  double dx = 0.0;         // fluid particle spacing [m] (required)
+  double h_over_dx = 1.3;  // smoothing length ratio [-]
   KernelType kernel = KernelType::WendlandC2;
   double cfl = 0.25;               // fluid acoustic CFL number [-] (spec §2)
   double solid_cfl = 0.5;          // solid CFL number [-] (spec §3)
   double end_time = 0.0;           // [s] (required)
   Vec2 gravity{0.0, -9.81};        // [m/s^2]
-  double neighbour_skin = 0.1;     // Verlet skin as a fraction of the kernel support [-]
+  double neighbour_skin = 0.2;     // Verlet skin as a fraction of the kernel support [-]
   bool dual_time_stepping = true;  // sub-cycle solids inside a fluid step (spec §6)
   double dt_floor = 1e-9;          // a step below this is divergence [s]
   Box domain;                      // a particle leaving this box is divergence [m] (required)
 };
 
 struct FluidBlockConfig {
-  Box box;                 // filled with particles on a dx lattice, centred in cells [m]
-  double surface = 0.0;    // still free-surface height for hydrostatic init [m] (default box.max.y)
+  Box box;               // filled with particles on a dx lattice, centred in cells [m]
+  double surface = 0.0;  // still free-surface height for hydrostatic init [m] (default box.max.y)
 };
 
 struct FluidConfig {
@@ -46,13 +46,13 @@ struct FluidConfig {
 
 struct MaterialConfig {
   std::string name;
-  std::string model = "svk";   // "svk" (St Venant–Kirchhoff, plane strain)
-  double density = 0.0;        // [kg/m^3]
-  double youngs_modulus = 0.0; // [Pa]
-  double poisson_ratio = 0.0;  // [-]
-  double av_alpha = 1.0;       // Monaghan artificial viscosity α [-] (spec §3)
-  double av_beta = 0.0;        // Monaghan artificial viscosity β [-]
-  double hourglass = 0.1;      // hourglass control coefficient [-] (0 = off)
+  std::string model = "svk";    // "svk" (St Venant–Kirchhoff, plane strain)
+  double density = 0.0;         // [kg/m^3]
+  double youngs_modulus = 0.0;  // [Pa]
+  double poisson_ratio = 0.0;   // [-]
+  double av_alpha = 1.0;        // Monaghan artificial viscosity α [-] (spec §3)
+  double av_beta = 0.0;         // Monaghan artificial viscosity β [-]
+  double hourglass = 0.1;       // hourglass control coefficient [-] (0 = off)
 };
 
 struct ShapeConfig {
@@ -90,10 +90,10 @@ struct BodyConfig {
   // the material's, else (rigid_fixed / rigid_prescribed only) fluid.density.
   double density = 0.0;
   ShapeConfig shape;
-  double dx = 0.0;                 // particle spacing [m] (default numerics.dx)
-  double h_over_dx = 0.0;          // default numerics.h_over_dx
-  Vec2 velocity;                   // initial velocity [m/s]
-  double angular_velocity = 0.0;   // initial angular velocity [rad/s]
+  double dx = 0.0;                // particle spacing [m] (default numerics.dx)
+  double h_over_dx = 0.0;         // default numerics.h_over_dx
+  Vec2 velocity;                  // initial velocity [m/s]
+  double angular_velocity = 0.0;  // initial angular velocity [rad/s]
   // Optional initial velocity profile: "" or "cantilever_mode" (Gray et al. 2001, with
   // mode_vf and the clamp's free end at shape.box.max.x).
   std::string initial_profile;
@@ -121,7 +121,7 @@ struct OutputConfig {
   double interval = 0.0;        // VTK interval [s] (default end_time/50)
   double probe_interval = 0.0;  // probes.csv interval [s] (0 = every fluid step)
   bool vtk = true;
-  std::string plot;             // "" or "cylinder_entry", "dam_break", "plate", "gate"
+  std::string plot;  // "" or "cylinder_entry", "dam_break", "plate", "gate"
   std::vector<ProbeConfig> probes;
 };
 

@@ -129,7 +129,7 @@ NumericsConfig parse_numerics(const Reader& root) {
   n.gravity = vec(*r, "gravity", "accelerations in m/s^2", Vec2{0.0, -9.81});
   n.neighbour_skin =
       num(*r, "neighbour_skin",
-          {0.0, 1.0, false, false, "a fraction of the kernel support in [0, 1]"}, 0.1);
+          {0.0, 1.0, false, false, "a fraction of the kernel support in [0, 1]"}, 0.2);
   n.dual_time_stepping = r->boolean("dual_time_stepping").value_or(true);
   n.dt_floor = num(*r, "dt_floor", positive("a positive time in s"), 1e-9);
   auto d = r->table("domain", "a table [numerics.domain] with min and max");

@@ -41,6 +41,7 @@ void build_reference_operators(SolidBody& body, const Executor& exec) {
     CellGrid grid;
     grid.build(body.X, body.kernel.support());
     build_neighbour_list(body.X, body.X, grid, body.kernel.support(), true, exec, body.pairs);
+    sort_each_list(body.pairs, exec);  // reverse_of_symmetric searches sorted lists
     reverse_of_symmetric(body.pairs, body.pair_reverse);
     use.assign(body.pairs.index.size(), 1);
     raw.resize(body.pairs.index.size());

@@ -57,7 +57,8 @@ TEST(Riemann, SwappingSidesGivesSamePressureExactly) {
 TEST(TaitEos, RoundTripAndRestState) {
   const TaitEos eos{1000.0, 25.0, 7.0};
   EXPECT_DOUBLE_EQ(eos.pressure(1000.0), 0.0);
-  for (double p : {-5e4, -1e3, 0.0, 1e3, 3.9e3, 1e5}) EXPECT_NEAR(eos.pressure(eos.density(p)), p, 1e-7);
+  for (double p : {-5e4, -1e3, 0.0, 1e3, 3.9e3, 1e5})
+    EXPECT_NEAR(eos.pressure(eos.density(p)), p, 1e-7);
   // Linearisation: dp/drho = c0^2 at rest.
   const double e = 1e-4;
   EXPECT_NEAR((eos.pressure(1000.0 + e) - eos.pressure(1000.0 - e)) / (2 * e), 625.0, 1e-5);

@@ -299,7 +299,7 @@ TEST(IoCaseParse, DefaultsFilled) {
   EXPECT_DOUBLE_EQ(n.cfl, 0.25);
   EXPECT_DOUBLE_EQ(n.solid_cfl, 0.5);
   expect_vec(n.gravity, {0.0, -9.81});
-  EXPECT_DOUBLE_EQ(n.neighbour_skin, 0.1);
+  EXPECT_DOUBLE_EQ(n.neighbour_skin, 0.2);
   EXPECT_TRUE(n.dual_time_stepping);
   EXPECT_DOUBLE_EQ(n.dt_floor, 1e-9);
   EXPECT_DOUBLE_EQ(c.fluid.density, 1000.0);

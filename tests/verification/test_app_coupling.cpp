@@ -38,7 +38,8 @@ youngs_modulus = 1.2e7
 poisson_ratio = 0.4
 [[body]]
 name = "disc"
-kind = ")" + kind +
+kind = ")" +
+         kind +
          R"("
 material = "rubber"
 velocity = [0.0, -2.0]
@@ -51,7 +52,8 @@ radius = 0.06
 
 double momentum_scale(const Simulation& sim) {
   double s = 0.0;
-  for (std::size_t i = 0; i < sim.fluid().size(); ++i) s += sim.fluid().m[i] * norm(sim.fluid().v[i]);
+  for (std::size_t i = 0; i < sim.fluid().size(); ++i)
+    s += sim.fluid().m[i] * norm(sim.fluid().v[i]);
   for (const SolidBody& b : sim.bodies())
     for (std::size_t i = 0; i < b.size(); ++i) s += b.m[i] * norm(b.v[i]);
   return s;
@@ -67,8 +69,10 @@ void expect_momentum_conserved(const std::string& kind) {
   }
   const Vec2 p1 = sim.total_momentum();
   const double scale = momentum_scale(sim);
-  std::printf("%s: momentum change (%.3g, %.3g) kg m/s per m over %ld steps; scale %.3g; peak force %.0f N/m\n",
-              kind.c_str(), p1.x - p0.x, p1.y - p0.y, sim.steps(), scale, max_force);
+  std::printf(
+      "%s: momentum change (%.3g, %.3g) kg m/s per m over %ld steps; scale %.3g; peak force %.0f "
+      "N/m\n",
+      kind.c_str(), p1.x - p0.x, p1.y - p0.y, sim.steps(), scale, max_force);
   EXPECT_GT(max_force, 500.0);                     // there was an impact
   EXPECT_GT(sim.total_momentum().y, p0.y - 1e-9);  // and it is the same momentum
   EXPECT_LT(std::abs(p1.x - p0.x), 1e-10 * scale);
@@ -81,9 +85,13 @@ void expect_momentum_conserved(const std::string& kind) {
 
 }  // namespace
 
-TEST(Coupling, RigidBodyImpactConservesMomentumToRoundOff) { expect_momentum_conserved("rigid_free"); }
+TEST(Coupling, RigidBodyImpactConservesMomentumToRoundOff) {
+  expect_momentum_conserved("rigid_free");
+}
 
-TEST(Coupling, ElasticBodyImpactConservesMomentumToRoundOff) { expect_momentum_conserved("elastic"); }
+TEST(Coupling, ElasticBodyImpactConservesMomentumToRoundOff) {
+  expect_momentum_conserved("elastic");
+}
 
 TEST(Coupling, ThinPlateDoesNotLeak) {
   // Water 0.3 m deep against a vertical plate two particles thick (body spacing half the
@@ -125,8 +133,10 @@ max = [0.31, 0.45]
     sim.step();
     for (const Vec2& x : sim.fluid().x) max_x = std::max(max_x, x.x);
   }
-  std::printf("leaked %ld, largest water x %.4f m (plate face at 0.3 m), plate force %.1f N/m (rho g H^2/2 = %.1f)\n",
-              sim.leaked_particles(), max_x, sim.body_load(1).total.x, 1000 * 9.81 * 0.09 / 2);
+  std::printf(
+      "leaked %ld, largest water x %.4f m (plate face at 0.3 m), plate force %.1f N/m (rho g H^2/2 "
+      "= %.1f)\n",
+      sim.leaked_particles(), max_x, sim.body_load(1).total.x, 1000 * 9.81 * 0.09 / 2);
   EXPECT_EQ(sim.leaked_particles(), 0);
   EXPECT_LT(max_x, 0.3);
   // Hydrostatic thrust on the plate, rho g H^2 / 2: measured -7.4 % with this two-layer
@@ -156,7 +166,9 @@ TEST(Coupling, DualTimeSteppingMatchesGlobalStep) {
   };
   double t_dual = 0.0, t_single = 0.0;
   const double dual = run(true, t_dual), single = run(false, t_single);
-  std::printf("peak force: dual %.1f N/m (%.2f s), single step %.1f N/m (%.2f s), difference %.2f %%, speed-up %.2f\n",
-              dual, t_dual, single, t_single, 100 * (dual / single - 1), t_single / t_dual);
+  std::printf(
+      "peak force: dual %.1f N/m (%.2f s), single step %.1f N/m (%.2f s), difference %.2f %%, "
+      "speed-up %.2f\n",
+      dual, t_dual, single, t_single, 100 * (dual / single - 1), t_single / t_dual);
   EXPECT_NEAR(dual / single, 1.0, 0.02);
 }

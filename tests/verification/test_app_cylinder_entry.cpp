@@ -15,7 +15,8 @@
 using namespace slamsph;
 
 TEST(CylinderEntry, ReducedRunFollowsCampbellWeynberg) {
-  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/elastic_cylinder_entry.toml");
+  CaseConfig cfg =
+      load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/elastic_cylinder_entry.toml");
   rescale_resolution(cfg, 0.01);
   cfg.numerics.end_time = 0.03;
   Simulation sim(cfg, silent_options(1));
@@ -38,7 +39,8 @@ TEST(CylinderEntry, ReducedRunFollowsCampbellWeynberg) {
   const int n = 2000;
   for (int k = 0; k < n; ++k) {
     const double tk = (k + 0.5) * 0.02 / n;
-    cw_impulse += slamming_force(SlammingTheory::CampbellWeynberg, V * tk / (2 * R), rho, V, R) * 0.02 / n;
+    cw_impulse +=
+        slamming_force(SlammingTheory::CampbellWeynberg, V * tk / (2 * R), rho, V, R) * 0.02 / n;
   }
   const double ta = 0.05 * 2 * R / V, tb = 0.25 * 2 * R / V;
   for (int k = 0; k < n; ++k) {
@@ -47,10 +49,12 @@ TEST(CylinderEntry, ReducedRunFollowsCampbellWeynberg) {
     sim_mean += interpolate(t, fy, tk) / n;
   }
   const double cw_peak = slamming_force(SlammingTheory::CampbellWeynberg, 0.0, rho, V, R);
-  std::printf("peak %.0f N/m at %.2f ms (CW %.0f: %+.1f %%); impulse 0-20 ms %.3f N s/m (CW %.3f: %+.1f %%); mean s/D 0.05-0.25 %.0f N/m (CW %.0f: %+.1f %%); leaked %ld\n",
-              peak.value, 1e3 * peak.time, cw_peak, 100 * (peak.value / cw_peak - 1), impulse, cw_impulse,
-              100 * (impulse / cw_impulse - 1), sim_mean, cw_mean, 100 * (sim_mean / cw_mean - 1),
-              sim.leaked_particles());
+  std::printf(
+      "peak %.0f N/m at %.2f ms (CW %.0f: %+.1f %%); impulse 0-20 ms %.3f N s/m (CW %.3f: %+.1f "
+      "%%); mean s/D 0.05-0.25 %.0f N/m (CW %.0f: %+.1f %%); leaked %ld\n",
+      peak.value, 1e3 * peak.time, cw_peak, 100 * (peak.value / cw_peak - 1), impulse, cw_impulse,
+      100 * (impulse / cw_impulse - 1), sim_mean, cw_mean, 100 * (sim_mean / cw_mean - 1),
+      sim.leaked_particles());
   EXPECT_NEAR(peak.value / cw_peak, 1.0, 0.15);
   EXPECT_LT(peak.time, 0.005);  // the peak is the initial slam
   EXPECT_NEAR(impulse / cw_impulse, 1.0, 0.20);

@@ -30,8 +30,10 @@ TEST(DamBreak, SurgeFrontFollowsMartinMoyce) {
   }
   const SeriesError mm = front_error(t, front, a, g, martin_moyce_1952(), 2.5);
   const SeriesError ko = front_error(t, front, a, g, koshizuka_oka_1996(), 2.5);
-  std::printf("front error vs Martin & Moyce: max %.2f %% (at T = %.2f), rms %.2f %%; vs Koshizuka & Oka: max %.2f %%, rms %.2f %%\n",
-              100 * mm.max_abs, mm.at, 100 * mm.rms, 100 * ko.max_abs, 100 * ko.rms);
+  std::printf(
+      "front error vs Martin & Moyce: max %.2f %% (at T = %.2f), rms %.2f %%; vs Koshizuka & Oka: "
+      "max %.2f %%, rms %.2f %%\n",
+      100 * mm.max_abs, mm.at, 100 * mm.rms, 100 * ko.max_abs, 100 * ko.rms);
   EXPECT_GE(mm.samples, 8u);
   EXPECT_LT(mm.max_abs, 0.18);
   EXPECT_LT(mm.rms, 0.12);

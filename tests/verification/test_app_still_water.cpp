@@ -33,9 +33,11 @@ TEST(StillWater, StaysHydrostaticAndAtRest) {
   const double expected = rho * g * (H - 0.01);
   RecordProperty("p_bottom_Pa", std::to_string(p_bottom));
   RecordProperty("vmax_over_sqrt_gH", std::to_string(vmax_late / std::sqrt(g * H)));
-  std::printf("bottom pressure %.1f Pa (expected %.1f, error %.2f %%), peak speed %.3g m/s = %.3f %% of sqrt(gH)\n",
-              p_bottom, expected, 100 * (p_bottom / expected - 1), vmax_late,
-              100 * vmax_late / std::sqrt(g * H));
+  std::printf(
+      "bottom pressure %.1f Pa (expected %.1f, error %.2f %%), peak speed %.3g m/s = %.3f %% of "
+      "sqrt(gH)\n",
+      p_bottom, expected, 100 * (p_bottom / expected - 1), vmax_late,
+      100 * vmax_late / std::sqrt(g * H));
   EXPECT_NEAR(p_bottom / expected, 1.0, 0.02);
   EXPECT_LT(vmax_late, 0.06 * std::sqrt(g * H));
   EXPECT_EQ(sim.leaked_particles(), 0);
