@@ -1,5 +1,6 @@
 // slamsph command line: run | check | plot. Exit codes: 0 ok, 1 internal error,
 // 2 bad input (nothing computed), 3 diverged run (outputs so far kept).
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -47,20 +48,22 @@ int run_command(int argc, char** argv) {
       opt.out_dir = value();
     else if (a == "--threads") {
       const double n = parse_number(a, value());
-      if (n < 1 || n != static_cast<int>(n))
-        throw InputError("command line: --threads: expected a positive integer");
+      if (!(n >= 1 && n <= 1024) || n != std::floor(n))
+        throw InputError("command line: --threads: expected a whole number from 1 to 1024");
       opt.threads = static_cast<int>(n);
     } else if (a == "--end-time") {
       opt.end_time = parse_number(a, value());
-      if (!(*opt.end_time > 0.0)) throw InputError("command line: --end-time: expected > 0 s");
+      if (!(*opt.end_time > 0.0) || !std::isfinite(*opt.end_time))
+        throw InputError("command line: --end-time: expected a finite time > 0 s");
     } else if (a == "--max-steps") {
       const double n = parse_number(a, value());
-      if (n < 0 || n != static_cast<long>(n))
-        throw InputError("command line: --max-steps: expected a non-negative integer");
+      if (!(n >= 0 && n <= 1e15) || n != std::floor(n))
+        throw InputError("command line: --max-steps: expected a whole number >= 0");
       opt.max_steps = static_cast<long>(n);
     } else if (a == "--dx") {
       opt.dx = parse_number(a, value());
-      if (!(*opt.dx > 0.0)) throw InputError("command line: --dx: expected a positive length in m");
+      if (!(*opt.dx > 0.0) || !std::isfinite(*opt.dx))
+        throw InputError("command line: --dx: expected a positive length in m");
     } else if (a == "--quiet")
       opt.quiet = true;
     else if (a == "--no-output")

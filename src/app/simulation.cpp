@@ -110,7 +110,15 @@ void Simulation::build_bodies() {
     body.a.assign(lat.x.size(), Vec2{});
     body.f_fluid.assign(lat.x.size(), Vec2{});
     body.clamped.assign(lat.x.size(), 0);
-    setup_body(body, bc, mat, num);
+    try {
+      setup_body(body, bc, mat, num);
+    } catch (const InputError& e) {
+      // Setup finds what the parser cannot (e.g. a shape too small for its spacing): name
+      // the file and the key like the parser does.
+      throw InputError(cfg_.source_path + ": body[" + std::to_string(bodies_.size()) +
+                       "].shape: " + e.what() + "; expected a shape several particle " +
+                       "spacings across (dx = " + std::to_string(body.dx) + " m)");
+    }
     ref_normals_.push_back(reference_surface_normals(body.X, body.V0, body.kernel));
     bodies_.push_back(std::move(body));
   }

@@ -317,7 +317,7 @@ TEST_F(CliTest, DegenerateElasticBodyExitsTwoAndWritesNothing) {
 // The README contract for the same error: the message should name file, line and key
 // (bad.toml:18: body[0].shape.radius). Today it is "error: body 'd': select_fpm_sets: ...",
 // thrown from setup_body after parsing. Enable when the parser or the driver adds the location.
-TEST_F(CliTest, DISABLED_DegenerateElasticBodyNamesFileLineAndKey) {
+TEST_F(CliTest, DegenerateElasticBodyNamesFileAndKey) {
   write_case("bad.toml", kTinyDisc);
   const CliResult r = run("check bad.toml");
   EXPECT_EQ(r.code, 2) << r.err;
