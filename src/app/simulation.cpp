@@ -49,6 +49,17 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
   kernel_c_ = Kernel(num.kernel, hc);
   const double skin = num.neighbour_skin * kernel_c_.support();
   lists_ = std::make_unique<InteractionLists>(kernel_f_.support(), kernel_c_.support(), skin);
+  build_contact();
+  loads_.assign(bodies_.size(), BodyLoad{});
+  attach_probes();
+  evaluate_rates();
+}
+
+Simulation::~Simulation() = default;
+
+// The fluid's view of all solid particles: every body's particles, then the ghost layers
+// behind thin bodies (coupling/ghost_layers.h).
+void Simulation::build_contact() {
   contact_offset_.assign(bodies_.size() + 1, 0);
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     contact_offset_[b + 1] = contact_offset_[b] + bodies_[b].size();
@@ -68,8 +79,10 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
     contact_.local[c] = ghosts_[g].spec.parent;
     contact_.ghost[c] = 1;
   }
-  loads_.assign(bodies_.size(), BodyLoad{});
-  // Probes attached to bodies follow the body particle nearest to their start position.
+}
+
+// Probes attached to bodies follow the body particle nearest to their start position.
+void Simulation::attach_probes() {
   attached_.assign(cfg_.output.probes.size(), AttachedProbe{});
   for (std::size_t k = 0; k < cfg_.output.probes.size(); ++k) {
     const ProbeConfig& pc = cfg_.output.probes[k];
@@ -83,10 +96,7 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
       }
     }
   }
-  evaluate_rates();
 }
-
-Simulation::~Simulation() = default;
 
 void Simulation::build_bodies() {
   const NumericsConfig& num = cfg_.numerics;

@@ -67,6 +67,8 @@ class Simulation {
  private:
   void build_bodies();
   void build_fluid();
+  void build_contact();
+  void attach_probes();
   void gather_contact();
   void evaluate_rates();
   StepLimit compute_step() const;
