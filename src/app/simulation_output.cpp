@@ -41,6 +41,8 @@ void Simulation::write_frame(VtkSeries& vtk) const {
     for (std::size_t i = 0; i < fluid_.size(); ++i) id[i] = static_cast<double>(fluid_.id[i]);
     ff.push_back({"id", "-", 1, id, {}});
     ff.push_back({"set", "-", 1, set, {}});
+    std::vector<double> crossed(fluid_.crossed.begin(), fluid_.crossed.end());
+    ff.push_back({"crossed_solid", "-", 1, crossed, {}});  // leak counter flag (1 = crossed)
     vtk.write(time_, "fluid", fluid_.x, ff);
   }
   for (std::size_t b = 0; b < bodies_.size(); ++b) {

@@ -4,6 +4,7 @@
 // evaluated from the fluid side and from the solid side with identical arguments, so the
 // force on s is bit-for-bit minus the force on i and momentum is exchanged exactly.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "core/kernel.h"
@@ -43,7 +44,13 @@ inline ContactPairResult contact_pair(const ContactPairInput& in, const Kernel& 
   const RiemannState R{in.rhos, dot(in.vs, e), in.ps};
   const double dp_static = 0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);
   const RiemannStar s = solve_riemann(L, R, c0, omega, dp_static);
-  out.force = (-2.0 * in.Vi * in.Vs * s.p * dwr) * dx;
+  // No adhesion: a negative p* would pull water into the solid. Where a body moves away
+  // from the water faster than the water follows (the elastic gate swinging back), that
+  // attraction drew fluid particles through a five-particle-thick gate until the run
+  // diverged (docs/model.md §4). With p* >= 0 the water separates instead (a cavity at
+  // zero gauge pressure).
+  const double p_star = std::max(s.p, 0.0);
+  out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;
   out.drho_term = in.Vs * (L.u - s.u) * (-dwr * r);
   if constexpr (kViscous) {
     const double eta2 = 0.01 * kernel.h() * kernel.h();
