@@ -1,15 +1,14 @@
 #include "core/parallel.h"
 
-#include <omp.h>
-
 #include <algorithm>
+#include <thread>
 
 namespace slamsph {
 
 Executor::Executor(int threads) : threads_(std::max(1, threads)) {}
 
 int Executor::hardware_threads() {
-  return omp_get_num_procs();
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 }  // namespace slamsph
