@@ -83,20 +83,11 @@ void expect_momentum_conserved(const std::string& kind) {
   EXPECT_LT(pf.y, -0.05 * std::abs(p0.y));
 }
 
-}  // namespace
-
-TEST(Coupling, RigidBodyImpactConservesMomentumToRoundOff) {
-  expect_momentum_conserved("rigid_free");
-}
-
-TEST(Coupling, ElasticBodyImpactConservesMomentumToRoundOff) {
-  expect_momentum_conserved("elastic");
-}
-
-TEST(Coupling, ThinPlateDoesNotLeak) {
-  // Water 0.3 m deep against a vertical plate two particles thick (body spacing half the
-  // water's, so the plate is one water spacing thick); dry on the other side. 0.5 s.
-  const std::string text = R"(
+// Water 0.3 m deep left of a vertical rigid plate two particles thick (body spacing half
+// the water's, so the plate is one water spacing thick); optionally water 0.15 m deep on
+// its right too. 0.5 s.
+std::string thin_plate_case(bool wet_right) {
+  std::string t = R"(
 schema_version = 1
 name = "thin_plate"
 [numerics]
@@ -111,13 +102,16 @@ sound_speed = 25.0
 [[fluid.block]]
 min = [0.0, 0.0]
 max = [0.3, 0.3]
+)";
+  if (wet_right) t += "[[fluid.block]]\nmin = [0.31, 0.0]\nmax = [0.61, 0.15]\n";
+  t += R"(
 [[body]]
 name = "tank"
 kind = "rigid_fixed"
 [body.shape]
 type = "tank"
 min = [0.0, 0.0]
-max = [0.6, 0.5]
+max = [0.61, 0.5]
 [[body]]
 name = "plate"
 kind = "rigid_fixed"
@@ -127,7 +121,23 @@ type = "rectangle"
 min = [0.3, 0.0]
 max = [0.31, 0.45]
 )";
-  Simulation sim(parse_case_string(text, "thin_plate.toml"), silent_options(1));
+  return t;
+}
+
+}  // namespace
+
+TEST(Coupling, RigidBodyImpactConservesMomentumToRoundOff) {
+  expect_momentum_conserved("rigid_free");
+}
+
+TEST(Coupling, ElasticBodyImpactConservesMomentumToRoundOff) {
+  expect_momentum_conserved("elastic");
+}
+
+TEST(Coupling, ThinPlateDoesNotLeak) {
+  // Water 0.3 m deep against a vertical plate two particles thick (body spacing half the
+  // water's, so the plate is one water spacing thick); dry on the other side. 0.5 s.
+  Simulation sim(parse_case_string(thin_plate_case(false), "thin_plate.toml"), silent_options(1));
   double max_x = 0.0;
   while (sim.time() < 0.5) {
     sim.step();
@@ -148,41 +158,8 @@ max = [0.31, 0.45]
 TEST(Coupling, ThinPlateWetOnBothSidesDoesNotLeak) {
   // The same two-particle plate with water on both sides at different depths (0.3 m and
   // 0.15 m): each side must keep its particles (ghost layers act one side at a time).
-  const std::string text = R"(
-schema_version = 1
-name = "thin_plate_two_sides"
-[numerics]
-dx = 0.01
-end_time = 0.5
-[numerics.domain]
-min = [-0.1, -0.1]
-max = [0.7, 0.6]
-[fluid]
-density = 1000.0
-sound_speed = 25.0
-[[fluid.block]]
-min = [0.0, 0.0]
-max = [0.3, 0.3]
-[[fluid.block]]
-min = [0.31, 0.0]
-max = [0.61, 0.15]
-[[body]]
-name = "tank"
-kind = "rigid_fixed"
-[body.shape]
-type = "tank"
-min = [0.0, 0.0]
-max = [0.61, 0.5]
-[[body]]
-name = "plate"
-kind = "rigid_fixed"
-dx = 0.005
-[body.shape]
-type = "rectangle"
-min = [0.3, 0.0]
-max = [0.31, 0.45]
-)";
-  Simulation sim(parse_case_string(text, "thin_plate_two_sides.toml"), silent_options(1));
+  Simulation sim(parse_case_string(thin_plate_case(true), "thin_plate_two_sides.toml"),
+                 silent_options(1));
   // Ids are assigned block by block: the first block's particles are the left side.
   std::int64_t left_count = 0;
   for (std::size_t i = 0; i < sim.fluid().size(); ++i) left_count += sim.fluid().x[i].x < 0.3;
