@@ -166,8 +166,8 @@ int Simulation::run() {
         next_probe += probe_dt;
         if (next_probe <= time_) next_probe = time_ + probe_dt;
       }
-      if (vtk && time_ >= next_vtk - 1e-15) {
-        write_frame(*vtk);
+      if (out && time_ >= next_vtk - 1e-15) {  // VTK frames and bodies.csv rows
+        if (vtk) write_frame(*vtk);
         record_bodies();
         next_vtk += vtk_dt;
       }
@@ -176,8 +176,8 @@ int Simulation::run() {
       record(limit_.dt, prev);
       progress.update(time_, steps_, limit_.dt);
     }
-    if (out) record_probes();
-    if (vtk) write_frame(*vtk), record_bodies();
+    if (out) record_probes(), record_bodies();
+    if (vtk) write_frame(*vtk);
   } catch (const DivergenceError& e) {
     code = 3;
     failure = e.what();
