@@ -155,6 +155,7 @@ int Simulation::run() {
   const bool show_progress = !opt_.quiet && isatty(STDERR_FILENO);
   ProgressLine progress(end, show_progress);
   const auto t0 = std::chrono::steady_clock::now();
+  long frame_step = -1;  // step count at the last output frame
   int code = 0;
   std::string failure;
   record(0.0, loads_);
@@ -168,6 +169,7 @@ int Simulation::run() {
       }
       if (out && time_ >= next_vtk - 1e-15) {  // VTK frames and bodies.csv rows
         if (vtk) write_frame(*vtk);
+        frame_step = steps_;
         record_bodies();
         next_vtk += vtk_dt;
       }
@@ -181,7 +183,8 @@ int Simulation::run() {
   } catch (const DivergenceError& e) {
     code = 3;
     failure = e.what();
-    if (vtk) {
+    // Keep the state the run diverged in, unless that frame was just written.
+    if (vtk && steps_ != frame_step) {
       try {
         write_frame(*vtk);
       } catch (...) {
