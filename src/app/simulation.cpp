@@ -279,9 +279,9 @@ void Simulation::step() {
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos_.pressure(f.rho[i]);
   });
-  std::vector<std::vector<Vec2>> f_old(bodies_.size());
+  f_old_.resize(bodies_.size());  // the fluid force each body is advanced with (reused storage)
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    f_old[b] = bodies_[b].f_fluid;
+    f_old_[b] = bodies_[b].f_fluid;
     const double dts = stable_time_step(bodies_[b]);
     if (std::isfinite(dts)) solid_substeps_ += static_cast<long>(std::ceil(dt / dts - 1e-12));
     advance_body(bodies_[b], time_, dt, cfg_.numerics.gravity, exec_);
@@ -289,7 +289,7 @@ void Simulation::step() {
   time_ += dt;
   evaluate_rates();
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    correct_for_new_fluid_force(bodies_[b], f_old[b], dt);
+    correct_for_new_fluid_force(bodies_[b], f_old_[b], dt);
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.v[i] = f.v_half[i] + hdt * f.a[i];
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];

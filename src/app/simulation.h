@@ -103,6 +103,7 @@ class Simulation {
   long solid_substeps_ = 0;
   long leaked_ = 0;
   StepLimit limit_;
+  std::vector<std::vector<Vec2>> f_old_;  // step() scratch: fluid force before the step
 };
 
 }  // namespace slamsph
