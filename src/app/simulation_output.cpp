@@ -136,18 +136,11 @@ int Simulation::run() {
     if (!bodies_csv) return;
     std::vector<double> row{time_};
     for (const SolidBody& b : bodies_) {
-      double M = 0.0;
-      Vec2 c, v, a;
-      for (std::size_t i = 0; i < b.size(); ++i) {
-        M += b.m[i];
-        c += b.m[i] * b.x[i];
-        v += b.m[i] * b.v[i];
-        a += b.m[i] * b.a[i];
-      }
-      if (M > 0.0) c = c / M, v = v / M, a = a / M;
+      const BodySummary m = body_summary(b);
       const BodyEnergies e = body_energies(b);
       row.insert(row.end(),
-                 {c.x, c.y, v.x, v.y, a.x, a.y, e.kinetic, e.strain, e.dissipated, e.hourglass});
+                 {m.com.x, m.com.y, m.mean_velocity.x, m.mean_velocity.y, m.mean_acceleration.x,
+                  m.mean_acceleration.y, e.kinetic, e.strain, e.dissipated, e.hourglass});
     }
     bodies_csv->row(row);
   };

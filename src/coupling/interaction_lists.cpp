@@ -19,8 +19,7 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
   const double cell = std::max(r_ff, r_fc);
   // Reorder the fluid into cell order so neighbours are close in memory.
   fluid_grid_.build(f.x, cell);
-  perm_ = fluid_grid_.cell_order();
-  f.permute(perm_);
+  f.permute(fluid_grid_.cell_order());
   fluid_grid_.build(f.x, cell);
   build_neighbour_list(f.x, f.x, fluid_grid_, r_ff, true, exec, ff_);
   contact_grid_.build(c.x, cell);

@@ -31,15 +31,12 @@ class InteractionLists {
   // Fluid grid of the last build; a query radius up to cell_size() - skin is safe, since
   // no particle has moved more than skin/2 since.
   const CellGrid& fluid_grid() const { return fluid_grid_; }
-  // Permutation applied to the fluid at the last rebuild (new[k] = old[perm[k]]).
-  const std::vector<std::uint32_t>& last_permutation() const { return perm_; }
 
  private:
   double support_ff_, support_fc_, skin_;
   CellGrid fluid_grid_, contact_grid_;
   NeighbourList ff_, fc_, cf_;
   std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
-  std::vector<std::uint32_t> perm_;
   long rebuilds_ = 0;
 };
 
