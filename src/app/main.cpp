@@ -9,6 +9,7 @@
 
 #include "app/plot_command.h"
 #include "app/run_options.h"
+#include "app/setup_warnings.h"
 #include "app/simulation.h"
 #include "core/error.h"
 #include "io/case_file.h"
@@ -74,6 +75,8 @@ int run_command(int argc, char** argv) {
   if (cmd == "plot") return plot_command(path);
   CaseConfig cfg = load_case(path);
   if (opt.dx) rescale_resolution(cfg, *opt.dx);
+  if (opt.end_time) cfg.numerics.end_time = *opt.end_time;
+  for (const std::string& w : setup_warnings(cfg)) std::fprintf(stderr, "warning: %s\n", w.c_str());
   if (cmd == "check") {
     Simulation sim(std::move(cfg), silent_options(1));
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());

@@ -1,0 +1,23 @@
+// Set-up warnings (src/app/setup_warnings.h): still water on an unstable lattice is
+// flagged before the run, a stable ratio or a short run is not.
+#include <gtest/gtest.h>
+
+#include "app/setup_warnings.h"
+#include "io/case_file.h"
+
+using namespace slamsph;
+
+TEST(SetupWarnings, FlagsWaterAtRestOnAnUnstableLattice) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/still_water.toml");
+  EXPECT_TRUE(setup_warnings(cfg).empty());  // the shipped case: h = 1.38 dx
+  cfg.numerics.h_over_dx = 1.3;
+  const std::vector<std::string> w = setup_warnings(cfg);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("h_over_dx = 1.3"), std::string::npos) << w[0];
+  EXPECT_NE(w[0].find("1.38"), std::string::npos) << w[0];
+  cfg.numerics.end_time = 0.01;  // too short for the mode to matter
+  EXPECT_TRUE(setup_warnings(cfg).empty());
+  cfg.numerics.end_time = 1.0;
+  cfg.numerics.gravity = {0.0, 0.0};  // no pressure at rest, nothing to grow
+  EXPECT_TRUE(setup_warnings(cfg).empty());
+}
