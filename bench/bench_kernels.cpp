@@ -53,8 +53,8 @@ void BM_GsphFluidRates(benchmark::State& st) {
   grid.build(f.x, r);
   f.permute(grid.cell_order());
   grid.build(f.x, r);
-  NeighbourList nl;
-  build_neighbour_list(f.x, f.x, grid, r, true, exec, nl);
+  BandedPairs nl;
+  build_banded_pairs(f.x, grid, r, exec, nl);
   const GsphParams prm{45.0, 3.0, 0.0, {0.0, -9.81}};
   for (auto _ : st) {
     compute_gsph_fluid_rates(f, nl, k, prm, exec);

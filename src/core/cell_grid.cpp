@@ -70,6 +70,51 @@ void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> p
   });
 }
 
+std::vector<std::uint32_t> CellGrid::row_offsets() const {
+  std::vector<std::uint32_t> rows(static_cast<std::size_t>(ny_) + 1, 0);
+  for (int jy = 0; jy <= ny_; ++jy) rows[jy] = start_[static_cast<std::size_t>(jy) * nx_];
+  return rows;
+}
+
+void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double radius,
+                        const Executor& exec, BandedPairs& out) {
+  const std::size_t n = pts.size();
+  const double r2 = radius * radius;
+  NeighbourList& h = out.half;
+  h.start.assign(n + 1, 0);
+  exec.for_each(n, [&](std::size_t i) {
+    std::uint32_t c = 0;
+    const Vec2 q = pts[i];
+    grid.for_each_candidate(q, [&](std::uint32_t j) {
+      if (j > i && norm2(q - pts[j]) < r2) ++c;
+    });
+    h.start[i + 1] = c;
+  });
+  for (std::size_t i = 0; i < n; ++i) h.start[i + 1] += h.start[i];
+  h.index.resize(h.start[n]);
+  exec.for_each(n, [&](std::size_t i) {
+    std::uint32_t* dst = h.index.data() + h.start[i];
+    std::uint32_t k = 0;
+    const Vec2 q = pts[i];
+    grid.for_each_candidate(q, [&](std::uint32_t j) {
+      if (j > i && norm2(q - pts[j]) < r2) dst[k++] = j;
+    });
+  });
+  const std::vector<std::uint32_t>& order = grid.cell_order();
+  bool in_cell_order = order.size() == n && radius <= grid.cell_size();
+  for (std::size_t i = 0; in_cell_order && i < n; ++i) in_cell_order = order[i] == i;
+  out.band_start.clear();
+  if (in_cell_order) {
+    for (std::uint32_t r : grid.row_offsets())
+      if (out.band_start.empty() || r > out.band_start.back()) out.band_start.push_back(r);
+    // Empty rows were merged away; a pair can then skip one only if the rows between are empty,
+    // so "next non-empty row" still bounds the partner.
+    if (out.band_start.front() != 0) out.band_start.insert(out.band_start.begin(), 0);
+  } else {
+    out.band_start = {0, static_cast<std::uint32_t>(n)};
+  }
+}
+
 void sort_each_list(NeighbourList& list, const Executor& exec) {
   exec.for_each(list.size(), [&](std::size_t i) {
     std::sort(list.index.begin() + list.start[i], list.index.begin() + list.start[i + 1]);

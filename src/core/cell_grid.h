@@ -38,6 +38,9 @@ class CellGrid {
 
   // Point indices in cell order (row-major by y, then x): a locality-friendly ordering.
   const std::vector<std::uint32_t>& cell_order() const { return sorted_; }
+  // Offsets into cell_order() where each row of cells (constant y index) begins; ny + 1
+  // entries. Rows come in ascending y, cells within a row in ascending x.
+  std::vector<std::uint32_t> row_offsets() const;
   double cell_size() const { return cell_; }
 
  private:
@@ -77,5 +80,22 @@ void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> p
 
 // Sorts every list ascending (for algorithms that search the lists, e.g. pair reversal).
 void sort_each_list(NeighbourList& list, const Executor& exec);
+
+// Each pair once, for symmetric pair loops: half[i] holds the neighbours j > i within
+// `radius`. Particles are cut into bands of consecutive indices (band_start, one more entry
+// than bands) such that for every pair the partner j lies in the band of i or the next one,
+// which lets Executor::for_alternating run the bands in parallel without write conflicts.
+// When the points are in the grid's cell order (cell_order() is the identity, as after
+// permuting by it) each band is one row of cells, because a neighbour within one cell size
+// is at most one row up; otherwise there is a single band.
+struct BandedPairs {
+  NeighbourList half;
+  std::vector<std::uint32_t> band_start;
+  std::size_t bands() const { return band_start.empty() ? 0 : band_start.size() - 1; }
+};
+
+// radius <= grid.cell_size() is required for more than one band.
+void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double radius,
+                        const Executor& exec, BandedPairs& out);
 
 }  // namespace slamsph

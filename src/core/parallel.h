@@ -32,6 +32,19 @@ class Executor {
     }
   }
 
+  // f(b) for every band b in [0, n): first the even bands, in parallel, then the odd ones.
+  // For pair loops over banded particles (core/cell_grid.h, BandedPairs) in which the task of
+  // band b writes only to bands b and b + 1: tasks running together write disjoint data, and
+  // every particle receives its contributions in the same order for any thread count.
+  template <class F>
+  void for_alternating(std::size_t n, F&& f) const {
+    for (std::size_t parity = 0; parity < 2; ++parity) {
+      const long long count = static_cast<long long>((n + 1 - parity) / 2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_) if (count > 1)
+      for (long long k = 0; k < count; ++k) f(2 * static_cast<std::size_t>(k) + parity);
+    }
+  }
+
   // max over i of g(i); returns `init` for n == 0. Max is order-independent, hence exact.
   template <class G>
   double max_of(std::size_t n, G&& g,

@@ -21,7 +21,7 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
   fluid_grid_.build(f.x, cell);
   f.permute(fluid_grid_.cell_order());
   fluid_grid_.build(f.x, cell);
-  build_neighbour_list(f.x, f.x, fluid_grid_, r_ff, true, exec, ff_);
+  build_banded_pairs(f.x, fluid_grid_, r_ff, exec, ff_);
   contact_grid_.build(c.x, cell);
   build_neighbour_list(f.x, c.x, contact_grid_, r_fc, false, exec, fc_);
   build_neighbour_list(c.x, f.x, fluid_grid_, r_fc, false, exec, cf_);

@@ -24,7 +24,7 @@ class InteractionLists {
   bool update(FluidParticles& f, const ContactParticles& c, const Executor& exec,
               bool force = false);
 
-  const NeighbourList& ff() const { return ff_; }
+  const BandedPairs& ff() const { return ff_; }  // fluid–fluid, each pair once
   const NeighbourList& fc() const { return fc_; }
   const NeighbourList& cf() const { return cf_; }
   long rebuilds() const { return rebuilds_; }
@@ -35,7 +35,8 @@ class InteractionLists {
  private:
   double support_ff_, support_fc_, skin_;
   CellGrid fluid_grid_, contact_grid_;
-  NeighbourList ff_, fc_, cf_;
+  BandedPairs ff_;
+  NeighbourList fc_, cf_;
   std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
   long rebuilds_ = 0;
 };

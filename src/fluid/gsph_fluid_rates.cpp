@@ -13,7 +13,7 @@ namespace {
 // (tests/unit/test_fluid_momentum.cpp checks it against the plain formulas through the
 // conservation and uniform-state tests; riemann_solver.h is the reference).
 template <bool kViscous, KernelType kType>
-void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel_in,
+void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel_in,
                 const GsphParams& prm, const Executor& exec) {
   const Kernel kernel = kernel_in;  // a local copy keeps its constants in registers
   const double support2 = kernel.support() * kernel.support();
@@ -24,46 +24,69 @@ void rates_impl(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel
   const Vec2* v = f.v.data();
   const double* rho = f.rho.data();
   const double* p = f.p.data();
-  exec.for_each(f.size(), [&](std::size_t i) { f.volume[i] = f.m[i] / f.rho[i]; });
-  const double* V = f.volume.data();
+  Vec2* acc = f.a.data();
+  double* drho = f.drho.data();  // holds sum_j V_j (v_i - v*) . grad W until the last pass
   exec.for_each(f.size(), [&](std::size_t i) {
-    const Vec2 xi = x[i], vi = v[i];
-    const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi;
-    Vec2 acc;
-    double drho = 0.0;
-    for (std::uint32_t k = ff.start[i]; k < ff.start[i + 1]; ++k) {
-      const std::uint32_t j = ff.index[k];
-      const Vec2 dx = xi - x[j];
-      const double r2 = norm2(dx);
-      if (r2 >= support2 || r2 == 0.0) continue;  // the lists carry a skin
-      const double r = std::sqrt(r2), inv_r = 1.0 / r;
-      const double dwr = kernel.dw_over_r_as<kType>(r);  // grad_i W_ij = dwr * dx
-      const double rhoj = rho[j];
-      // Riemann problem along e_ij = -dx / r (spec §2; riemann_solver.h).
-      const double uL = -dot(vi, dx) * inv_r, uR = -dot(v[j], dx) * inv_r;
-      const double inv_sum = 1.0 / (rhoi + rhoj);
-      const double du = uL - uR;
-      const double beta = std::min(omega * std::max(du, 0.0), c0);
-      const double dp_static = 0.5 * (rhoi + rhoj) * dot(g, dx);
-      const double us = (rhoi * uL + rhoj * uR + (pi - p[j] - dp_static) * inv_c0) * inv_sum;
-      const double ps = (rhoj * pi + rhoi * p[j] + beta * rhoi * rhoj * du) * inv_sum;
-      // (v_i - v*) . grad W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r
-      drho -= V[j] * (uL - us) * dwr * r;
-      acc += (-2.0 * V[j] * ps * inv_rhoi * dwr) * dx;
-      if constexpr (kViscous) {
-        // Morris et al. 1997: sum m_j (mu_i + mu_j)/(rho_i rho_j) (r.gradW)/(r^2+eta^2) v_ij
-        const double coef =
-            V[j] * prm.viscosity * (rhoi + rhoj) * inv_rhoi * dwr * r2 / (r2 + eta2);
-        acc += coef * (vi - v[j]);
+    f.volume[i] = f.m[i] / f.rho[i];
+    acc[i] = Vec2{};
+    drho[i] = 0.0;
+  });
+  const double* V = f.volume.data();
+  const NeighbourList& half = pairs.half;
+  // Each pair once (j > i); the task of band b writes to bands b and b + 1 only.
+  exec.for_alternating(pairs.bands(), [&](std::size_t band) {
+    for (std::uint32_t i = pairs.band_start[band]; i < pairs.band_start[band + 1]; ++i) {
+      const Vec2 xi = x[i], vi = v[i];
+      const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi, Vi = V[i];
+      Vec2 acc_i;
+      double drho_i = 0.0;
+      for (std::uint32_t k = half.start[i]; k < half.start[i + 1]; ++k) {
+        const std::uint32_t j = half.index[k];
+        const Vec2 dx = xi - x[j];
+        const double r2 = norm2(dx);
+        if (r2 >= support2 || r2 == 0.0) continue;  // the lists carry a skin
+        const double r = std::sqrt(r2), inv_r = 1.0 / r;
+        const double dwr = kernel.dw_over_r_as<kType>(r);  // grad_i W_ij = dwr * dx
+        const double rhoj = rho[j], Vj = V[j], inv_rhoj = 1.0 / rhoj;
+        // Riemann problem along e_ij = -dx / r (spec §2; riemann_solver.h). Seen from j
+        // (left and right swapped, axis reversed) U* changes sign and p* is the same.
+        const double uL = -dot(vi, dx) * inv_r, uR = -dot(v[j], dx) * inv_r;
+        const double inv_sum = 1.0 / (rhoi + rhoj);
+        const double du = uL - uR;
+        const double beta = std::min(omega * std::max(du, 0.0), c0);
+        const double dp_static = 0.5 * (rhoi + rhoj) * dot(g, dx);
+        const double us = (rhoi * uL + rhoj * uR + (pi - p[j] - dp_static) * inv_c0) * inv_sum;
+        const double ps = (rhoj * pi + rhoi * p[j] + beta * rhoi * rhoj * du) * inv_sum;
+        // (v_i - v*) . grad_i W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r, and for j
+        // (v_j - v*) . grad_j W = -(U* - U_R) dwr r.
+        const double dwr_r = dwr * r;
+        drho_i -= Vj * (uL - us) * dwr_r;
+        drho[j] -= Vi * (us - uR) * dwr_r;
+        // Pressure forces -2 V_j p* / rho_i grad_i W and its mirror on j (equal and opposite
+        // momentum, m_i V_j / rho_i = V_i V_j = m_j V_i / rho_j).
+        const double fp = -2.0 * ps * dwr;
+        acc_i += (Vj * inv_rhoi * fp) * dx;
+        acc[j] -= (Vi * inv_rhoj * fp) * dx;
+        if constexpr (kViscous) {
+          // Morris et al. 1997: sum m_j (mu_i + mu_j)/(rho_i rho_j) (r.gradW)/(r^2+eta^2) v_ij
+          const double coef = prm.viscosity * (rhoi + rhoj) * dwr * r2 / (r2 + eta2);
+          const Vec2 vij = vi - v[j];
+          acc_i += (coef * Vj * inv_rhoi) * vij;
+          acc[j] -= (coef * Vi * inv_rhoj) * vij;
+        }
       }
+      acc[i] += acc_i;
+      drho[i] += drho_i;
     }
-    f.drho[i] = 2.0 * rhoi * drho;
-    f.a[i] = acc + g;
+  });
+  exec.for_each(f.size(), [&](std::size_t i) {
+    drho[i] *= 2.0 * rho[i];
+    acc[i] += g;
   });
 }
 
 template <bool kViscous>
-void dispatch_kernel(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+void dispatch_kernel(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
                      const GsphParams& prm, const Executor& exec) {
   if (kernel.type() == KernelType::WendlandC2)
     rates_impl<kViscous, KernelType::WendlandC2>(f, ff, kernel, prm, exec);
@@ -73,7 +96,7 @@ void dispatch_kernel(FluidParticles& f, const NeighbourList& ff, const Kernel& k
 
 }  // namespace
 
-void compute_gsph_fluid_rates(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec) {
   if (prm.viscosity > 0.0)
     dispatch_kernel<true>(f, ff, kernel, prm, exec);

@@ -3,7 +3,9 @@
 //   dv_i/dt   = -2 sum_j m_j p*/(rho_i rho_j) grad_i W_ij + g  (+ Morris viscosity)
 // Only v* . e_ij = U* enters the continuity term, because (v_i - v*) is contracted with
 // grad_i W_ij, which is parallel to e_ij. The pass overwrites `a` and `drho`; contact
-// terms (coupling/) are added afterwards.
+// terms (coupling/) are added afterwards. Each pair is evaluated once (core/cell_grid.h,
+// BandedPairs) and applied to both particles; the bands make that race-free and keep the
+// summation order, hence the results, independent of the thread count.
 #pragma once
 #include "core/cell_grid.h"
 #include "core/kernel.h"
@@ -19,7 +21,7 @@ struct GsphParams {
   Vec2 gravity;            // [m/s^2]
 };
 
-void compute_gsph_fluid_rates(FluidParticles& f, const NeighbourList& ff, const Kernel& kernel,
+void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec);
 
 }  // namespace slamsph

@@ -40,8 +40,8 @@ TEST(GsphFluidRates, ConservesLinearMomentumToRoundOff) {
   const Kernel k(KernelType::WendlandC2, 0.013);
   CellGrid grid;
   grid.build(f.x, k.support());
-  NeighbourList nl;
-  build_neighbour_list(f.x, f.x, grid, k.support(), true, Executor(1), nl);
+  BandedPairs nl;
+  build_banded_pairs(f.x, grid, k.support(), Executor(1), nl);
   const GsphParams prm{30.0, 3.0, 1e-4, {0.0, -9.81}};
   compute_gsph_fluid_rates(f, nl, k, prm, Executor(2));
   Vec2 total, scale;
@@ -60,8 +60,13 @@ TEST(GsphFluidRates, ThreadCountDoesNotChangeResults) {
   const Kernel k(KernelType::CubicSpline, 0.013);
   CellGrid grid;
   grid.build(a.x, k.support());
-  NeighbourList nl;
-  build_neighbour_list(a.x, a.x, grid, k.support(), true, Executor(1), nl);
+  // In cell order the pairs come in many bands that run in parallel (BandedPairs).
+  a.permute(grid.cell_order());
+  b.permute(grid.cell_order());
+  grid.build(a.x, k.support());
+  BandedPairs nl;
+  build_banded_pairs(a.x, grid, k.support(), Executor(1), nl);
+  ASSERT_GT(nl.bands(), 10u);
   const GsphParams prm{30.0, 3.0, 0.0, {0.0, -9.81}};
   compute_gsph_fluid_rates(a, nl, k, prm, Executor(1));
   compute_gsph_fluid_rates(b, nl, k, prm, Executor(2));
@@ -88,8 +93,8 @@ TEST(GsphFluidRates, UniformStateHasNoInteriorForce) {
   const Kernel k(KernelType::WendlandC2, 1.3 * dx);
   CellGrid grid;
   grid.build(f.x, k.support());
-  NeighbourList nl;
-  build_neighbour_list(f.x, f.x, grid, k.support(), true, Executor(1), nl);
+  BandedPairs nl;
+  build_banded_pairs(f.x, grid, k.support(), Executor(1), nl);
   compute_gsph_fluid_rates(f, nl, k, {30.0, 3.0, 0.0, {0.0, -9.81}}, Executor(1));
   const std::size_t centre = 10 * 20 + 10;
   EXPECT_NEAR(f.a[centre].x, 0.0, 1e-9);
