@@ -1,4 +1,4 @@
-// Micro-benchmarks of the hot loops: neighbour-list build and the fused GSPH fluid pass,
+// Micro-benchmarks of the hot loops: neighbour-list builds and the fused GSPH fluid pass,
 // on a dam-break-like block of water at rest (hydrostatic), per thread count.
 // Items processed = particles, so the rate column reads particles per second.
 #include <benchmark/benchmark.h>
@@ -36,6 +36,32 @@ void BM_NeighbourListBuild(benchmark::State& st) {
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
 BENCHMARK(BM_NeighbourListBuild)
+    ->Args({200, 1})
+    ->Args({200, 2})
+    ->Args({800, 1})
+    ->Args({800, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// What the solver builds for the fluid: each pair once, in bands of cell rows, after the
+// cell-order permutation (coupling/interaction_lists.cpp).
+void BM_BandedPairsBuild(benchmark::State& st) {
+  const double dx = 0.0025;
+  FluidParticles f = block(static_cast<int>(st.range(0)), static_cast<int>(st.range(0)) / 2, dx);
+  const Executor exec(static_cast<int>(st.range(1)));
+  const double r = 2.6 * dx * 1.1;
+  CellGrid grid;
+  BandedPairs pairs;
+  for (auto _ : st) {
+    grid.build(f.x, r);
+    f.permute(grid.cell_order());
+    grid.build(f.x, r);
+    build_banded_pairs(f.x, grid, r, exec, pairs);
+    benchmark::DoNotOptimize(pairs.half.index.data());
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
+}
+BENCHMARK(BM_BandedPairsBuild)
     ->Args({200, 1})
     ->Args({200, 2})
     ->Args({800, 1})

@@ -92,6 +92,11 @@ bool validation_report(const CaseConfig& cfg, const std::string& out_dir, JsonOb
       o.set("front_max_relative_error_T_le_2.5", e.max_abs);
       o.set("at_T", e.at);
       o.set("samples", static_cast<long>(e.samples));
+      // Diagnostic: the start-up delay (T units) that best explains the difference.
+      const ShiftedFrontError b =
+          best_front_shift(t.columns[0], front, p.dam_width, p.gravity, tab, 2.5);
+      o.set("best_start_delay_T", b.shift);
+      o.set("front_max_relative_error_T_le_2.5_after_delay", b.error.max_abs);
       out.set(tab.name, o);
     }
     return true;

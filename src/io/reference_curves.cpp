@@ -145,19 +145,33 @@ SeriesError slamming_history_error(const std::vector<double>& t, const std::vect
 }
 
 SeriesError front_error(const std::vector<double>& t, const std::vector<double>& front_x,
-                        double column_width, double gravity, const FrontTable& table,
-                        double T_max) {
+                        double column_width, double gravity, const FrontTable& table, double T_max,
+                        double time_shift) {
   if (!(column_width > 0.0) || !(gravity > 0.0))
     throw std::invalid_argument("front_error: column width and gravity must be > 0");
   const double scale = std::sqrt(2.0 * gravity / column_width);  // T = t * scale
   ErrorAccumulator acc;
   for (std::size_t k = 0; k < table.T.size(); ++k) {
-    if (table.T[k] > T_max) continue;
-    const double x = interpolate(t, front_x, table.T[k] / scale);
+    if (table.T[k] > T_max || table.T[k] - time_shift < 0.0) continue;
+    const double x = interpolate(t, front_x, (table.T[k] - time_shift) / scale);
     if (std::isnan(x)) continue;
     acc.add(table.T[k], relative_error(x / column_width, table.Z[k]));
   }
   return acc.result();
+}
+
+ShiftedFrontError best_front_shift(const std::vector<double>& t, const std::vector<double>& front_x,
+                                   double column_width, double gravity, const FrontTable& table,
+                                   double T_max, double max_shift) {
+  ShiftedFrontError best;
+  best.error = front_error(t, front_x, column_width, gravity, table, T_max, 0.0);
+  const int steps = static_cast<int>(std::round(max_shift / 0.01));
+  for (int k = 1; k <= steps; ++k) {
+    const double shift = 0.01 * k;
+    const SeriesError e = front_error(t, front_x, column_width, gravity, table, T_max, shift);
+    if (e.samples > 0 && e.max_abs < best.error.max_abs) best = {shift, e};
+  }
+  return best;
 }
 
 }  // namespace slamsph

@@ -97,7 +97,22 @@ SeriesError slamming_history_error(const std::vector<double>& t, const std::vect
 // Relative error of a simulated surge front x(t) (measured from the wall the column rests
 // against) against a table: the simulated Z = x/a is interpolated at the table's T values
 // with T ≤ T_max (t = T / sqrt(2g/a)); table points outside the simulated time are skipped.
+// `time_shift` (in T units) compares the simulated Z(T - shift) with the table's Z(T): a
+// simulation that starts `shift` earlier than the experiment's clock (whose gate or
+// diaphragm took time to clear the column).
 SeriesError front_error(const std::vector<double>& t, const std::vector<double>& front_x,
-                        double column_width, double gravity, const FrontTable& table, double T_max);
+                        double column_width, double gravity, const FrontTable& table, double T_max,
+                        double time_shift = 0.0);
+
+struct ShiftedFrontError {
+  double shift = 0.0;  // the delay in T units (0 ... max_shift, steps of 0.01)
+  SeriesError error;   // front_error at that delay
+};
+
+// The start-up delay that minimises the largest front error (a diagnostic: the issue's
+// targets use shift 0). Table points with T - shift < 0 are skipped.
+ShiftedFrontError best_front_shift(const std::vector<double>& t, const std::vector<double>& front_x,
+                                   double column_width, double gravity, const FrontTable& table,
+                                   double T_max, double max_shift = 0.5);
 
 }  // namespace slamsph

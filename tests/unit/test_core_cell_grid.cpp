@@ -53,3 +53,44 @@ TEST(CellGrid, ListsIndependentOfThreadCount) {
   EXPECT_EQ(a.start, b.start);
   EXPECT_EQ(a.index, b.index);
 }
+
+// Banded half lists: every pair within the radius exactly once, and in cell order the
+// partner of a pair always lies in the band of its first particle or the next one (what
+// makes Executor::for_alternating race-free). Out of cell order there is one band.
+TEST(CellGrid, BandedPairsHoldEachPairOnceWithinAdjacentBands) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Vec2> pts(3000);
+  for (Vec2& p : pts) p = {u(rng), 0.6 * u(rng)};
+  const double radius = 0.045;
+  CellGrid grid;
+  grid.build(pts, radius * 1.2);
+  BandedPairs out;
+  build_banded_pairs(pts, grid, radius, Executor(2), out);
+  EXPECT_EQ(out.bands(), 1u);
+  // Cell order.
+  std::vector<Vec2> sorted(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) sorted[k] = pts[grid.cell_order()[k]];
+  grid.build(sorted, radius * 1.2);
+  build_banded_pairs(sorted, grid, radius, Executor(2), out);
+  ASSERT_GT(out.bands(), 5u);
+  ASSERT_EQ(out.band_start.front(), 0u);
+  ASSERT_EQ(out.band_start.back(), sorted.size());
+  std::vector<std::size_t> band_of(sorted.size());
+  for (std::size_t b = 0; b < out.bands(); ++b)
+    for (std::uint32_t i = out.band_start[b]; i < out.band_start[b + 1]; ++i) band_of[i] = b;
+  std::size_t pairs = 0, brute = 0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    for (std::uint32_t k = out.half.start[i]; k < out.half.start[i + 1]; ++k) {
+      const std::uint32_t j = out.half.index[k];
+      ASSERT_GT(j, i);
+      ASSERT_LT(norm(sorted[i] - sorted[j]), radius);
+      ASSERT_LE(band_of[j] - band_of[i], 1u);
+      ++pairs;
+    }
+    for (std::size_t j = i + 1; j < sorted.size(); ++j)
+      if (norm(sorted[i] - sorted[j]) < radius) ++brute;
+  }
+  EXPECT_EQ(pairs, brute);
+  EXPECT_GT(pairs, 10000u);
+}

@@ -122,5 +122,24 @@ TEST(IoReferenceMetrics, FrontErrorKnownAnswers) {
   EXPECT_EQ(e.samples, 6u);
 }
 
+TEST(IoReferenceMetrics, BestFrontShiftFindsAStartUpDelay) {
+  const FrontTable mm = martin_moyce_1952();
+  const double a = 0.146, g = 9.81, scale = std::sqrt(2 * g / a);
+  // A simulated front that runs through the experiment's points 0.2 earlier in T.
+  std::vector<double> t, x;
+  for (std::size_t i = 0; i < mm.T.size(); ++i) {
+    t.push_back((mm.T[i] - 0.2) / scale);
+    x.push_back(mm.Z[i] * a);
+  }
+  EXPECT_GT(front_error(t, x, a, g, mm, 2.5).max_abs, 0.05);
+  const ShiftedFrontError b = best_front_shift(t, x, a, g, mm, 2.5);
+  EXPECT_NEAR(b.shift, 0.2, 1e-9);
+  EXPECT_LT(b.error.max_abs, 1e-12);
+  EXPECT_EQ(b.error.samples, 10u);
+  // Without a delay in the data the best shift is none.
+  for (auto& ti : t) ti += 0.2 / scale;
+  EXPECT_EQ(best_front_shift(t, x, a, g, mm, 2.5).shift, 0.0);
+}
+
 }  // namespace
 }  // namespace slamsph
