@@ -105,11 +105,10 @@ void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double 
   for (std::size_t i = 0; in_cell_order && i < n; ++i) in_cell_order = order[i] == i;
   out.band_start.clear();
   if (in_cell_order) {
+    // One band per non-empty row of cells (row_offsets() starts at 0 and ends at n). Empty
+    // rows hold no partners, so dropping them keeps every partner in the same or next band.
     for (std::uint32_t r : grid.row_offsets())
       if (out.band_start.empty() || r > out.band_start.back()) out.band_start.push_back(r);
-    // Empty rows were merged away; a pair can then skip one only if the rows between are empty,
-    // so "next non-empty row" still bounds the partner.
-    if (out.band_start.front() != 0) out.band_start.insert(out.band_start.begin(), 0);
   } else {
     out.band_start = {0, static_cast<std::uint32_t>(n)};
   }
