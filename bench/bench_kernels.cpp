@@ -21,51 +21,35 @@ FluidParticles block(int nx, int ny, double dx) {
   return f;
 }
 
+// Arg 2 selects the list: 0 = full lists (every pair from both sides), 1 = what the solver
+// builds for the fluid: each pair once, in bands of cell rows, after the cell-order
+// permutation (coupling/interaction_lists.cpp).
 void BM_NeighbourListBuild(benchmark::State& st) {
   const double dx = 0.0025;
   FluidParticles f = block(static_cast<int>(st.range(0)), static_cast<int>(st.range(0)) / 2, dx);
   const Executor exec(static_cast<int>(st.range(1)));
+  const bool banded = st.range(2) != 0;
   const double r = 2.6 * dx * 1.1;
   CellGrid grid;
   NeighbourList nl;
+  BandedPairs pairs;
   for (auto _ : st) {
     grid.build(f.x, r);
-    build_neighbour_list(f.x, f.x, grid, r, true, exec, nl);
-    benchmark::DoNotOptimize(nl.index.data());
+    if (banded) {
+      f.permute(grid.cell_order());
+      grid.build(f.x, r);
+      build_banded_pairs(f.x, grid, r, exec, pairs);
+      benchmark::DoNotOptimize(pairs.half.index.data());
+    } else {
+      build_neighbour_list(f.x, f.x, grid, r, true, exec, nl);
+      benchmark::DoNotOptimize(nl.index.data());
+    }
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
 BENCHMARK(BM_NeighbourListBuild)
-    ->Args({200, 1})
-    ->Args({200, 2})
-    ->Args({800, 1})
-    ->Args({800, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-
-// What the solver builds for the fluid: each pair once, in bands of cell rows, after the
-// cell-order permutation (coupling/interaction_lists.cpp).
-void BM_BandedPairsBuild(benchmark::State& st) {
-  const double dx = 0.0025;
-  FluidParticles f = block(static_cast<int>(st.range(0)), static_cast<int>(st.range(0)) / 2, dx);
-  const Executor exec(static_cast<int>(st.range(1)));
-  const double r = 2.6 * dx * 1.1;
-  CellGrid grid;
-  BandedPairs pairs;
-  for (auto _ : st) {
-    grid.build(f.x, r);
-    f.permute(grid.cell_order());
-    grid.build(f.x, r);
-    build_banded_pairs(f.x, grid, r, exec, pairs);
-    benchmark::DoNotOptimize(pairs.half.index.data());
-  }
-  st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
-}
-BENCHMARK(BM_BandedPairsBuild)
-    ->Args({200, 1})
-    ->Args({200, 2})
-    ->Args({800, 1})
-    ->Args({800, 2})
+    ->ArgsProduct({{200, 800}, {1, 2}, {0, 1}})
+    ->ArgNames({"nx", "threads", "banded"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -41,19 +41,21 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
   for (std::size_t i = 0; i < pts.size(); ++i) sorted_[fill[cell_of[i]]++] = i;
 }
 
-void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
-                          const CellGrid& grid, double radius, bool skip_self, const Executor& exec,
-                          NeighbourList& out) {
+namespace {
+
+// CSR lists of the points j within `radius` of each query i for which accept(i, j) holds.
+// Pass 1 counts, pass 2 fills; both gather-style over the queries.
+template <class Accept>
+void build_lists(std::span<const Vec2> queries, std::span<const Vec2> pts, const CellGrid& grid,
+                 double radius, Accept accept, const Executor& exec, NeighbourList& out) {
   const std::size_t n = queries.size();
   const double r2 = radius * radius;
   out.start.assign(n + 1, 0);
-  // Pass 1: count. Pass 2: fill. Both gather-style over queries.
   exec.for_each(n, [&](std::size_t i) {
     std::uint32_t c = 0;
     const Vec2 q = queries[i];
     grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (skip_self && j == i) return;
-      if (norm2(q - pts[j]) < r2) ++c;
+      if (accept(i, j) && norm2(q - pts[j]) < r2) ++c;
     });
     out.start[i + 1] = c;
   });
@@ -64,10 +66,19 @@ void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> p
     std::uint32_t k = 0;
     const Vec2 q = queries[i];
     grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (skip_self && j == i) return;
-      if (norm2(q - pts[j]) < r2) dst[k++] = j;
+      if (accept(i, j) && norm2(q - pts[j]) < r2) dst[k++] = j;
     });
   });
+}
+
+}  // namespace
+
+void build_neighbour_list(std::span<const Vec2> queries, std::span<const Vec2> pts,
+                          const CellGrid& grid, double radius, bool skip_self, const Executor& exec,
+                          NeighbourList& out) {
+  build_lists(
+      queries, pts, grid, radius,
+      [skip_self](std::size_t i, std::uint32_t j) { return !(skip_self && j == i); }, exec, out);
 }
 
 std::vector<std::uint32_t> CellGrid::row_offsets() const {
@@ -79,27 +90,8 @@ std::vector<std::uint32_t> CellGrid::row_offsets() const {
 void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double radius,
                         const Executor& exec, BandedPairs& out) {
   const std::size_t n = pts.size();
-  const double r2 = radius * radius;
-  NeighbourList& h = out.half;
-  h.start.assign(n + 1, 0);
-  exec.for_each(n, [&](std::size_t i) {
-    std::uint32_t c = 0;
-    const Vec2 q = pts[i];
-    grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (j > i && norm2(q - pts[j]) < r2) ++c;
-    });
-    h.start[i + 1] = c;
-  });
-  for (std::size_t i = 0; i < n; ++i) h.start[i + 1] += h.start[i];
-  h.index.resize(h.start[n]);
-  exec.for_each(n, [&](std::size_t i) {
-    std::uint32_t* dst = h.index.data() + h.start[i];
-    std::uint32_t k = 0;
-    const Vec2 q = pts[i];
-    grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (j > i && norm2(q - pts[j]) < r2) dst[k++] = j;
-    });
-  });
+  build_lists(
+      pts, pts, grid, radius, [](std::size_t i, std::uint32_t j) { return j > i; }, exec, out.half);
   const std::vector<std::uint32_t>& order = grid.cell_order();
   bool in_cell_order = order.size() == n && radius <= grid.cell_size();
   for (std::size_t i = 0; in_cell_order && i < n; ++i) in_cell_order = order[i] == i;
