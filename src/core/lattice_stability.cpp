@@ -34,6 +34,21 @@ LatticeStability square_lattice_stability(const Kernel& kernel, double dx, int s
   return best;
 }
 
+bool is_stable(const LatticeStability& s, double dx) {
+  return s.lambda * dx * dx * dx * dx <= 1e-5;
+}
+
+double nearest_stable_h_over_dx(KernelType type, double h_over_dx) {
+  // lambda dx^4 depends on h/dx only; evaluate at dx = 1.
+  double best = 0.0;
+  for (int k = 120; k <= 200; ++k) {
+    const double r = 0.01 * k;
+    if (best > 0.0 && std::abs(r - h_over_dx) >= std::abs(best - h_over_dx)) continue;
+    if (is_stable(square_lattice_stability(Kernel(type, r), 1.0, 24), 1.0)) best = r;
+  }
+  return best;
+}
+
 double lattice_growth_rate(const LatticeStability& s, double pressure, double dx, double rho) {
   if (s.lambda <= 0.0 || pressure <= 0.0) return 0.0;
   return std::sqrt(2.0 * pressure * dx * dx * s.lambda / rho);

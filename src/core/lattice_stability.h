@@ -25,6 +25,14 @@ struct LatticeStability {
 // Scans k over [0, pi/dx]^2 with `samples` points per axis.
 LatticeStability square_lattice_stability(const Kernel& kernel, double dx, int samples = 48);
 
+// True if no transverse mode gains energy: lambda dx^4 <= 1e-5 (the long waves are neutral,
+// lambda -> 0, so an exact zero is out of reach of the k scan).
+bool is_stable(const LatticeStability& s, double dx);
+
+// The stable h/dx closest to `h_over_dx` on a 0.01 grid in [1.2, 2] (fewer neighbours cost
+// accuracy) for this kernel type; 0 if there is none.
+double nearest_stable_h_over_dx(KernelType type, double h_over_dx);
+
 // e-folding rate of the most unstable mode under pressure p [1/s]; 0 if stable.
 double lattice_growth_rate(const LatticeStability& s, double pressure, double dx, double rho);
 

@@ -73,3 +73,14 @@ TEST(LatticeStability, GrowthRateScalesWithPressureAndSpacing) {
   EXPECT_LT(r1, 25.0);
   EXPECT_EQ(lattice_growth_rate(s, -1.0, dx, 1000.0), 0.0);
 }
+
+TEST(LatticeStability, NearestStableRatio) {
+  EXPECT_DOUBLE_EQ(nearest_stable_h_over_dx(KernelType::WendlandC2, 1.3), 1.38);
+  EXPECT_DOUBLE_EQ(nearest_stable_h_over_dx(KernelType::WendlandC2, 1.38), 1.38);
+  EXPECT_DOUBLE_EQ(nearest_stable_h_over_dx(KernelType::CubicSpline, 1.3), 1.22);
+  const double dx = 0.01;
+  EXPECT_TRUE(
+      is_stable(square_lattice_stability(Kernel(KernelType::CubicSpline, 1.2 * dx), dx), dx));
+  EXPECT_FALSE(
+      is_stable(square_lattice_stability(Kernel(KernelType::WendlandC2, 1.3 * dx), dx), dx));
+}
