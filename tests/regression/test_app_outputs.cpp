@@ -382,7 +382,7 @@ TEST_F(Outputs, SummaryHasThePromisedKeysConsistentWithTheCsvs) {
   ASSERT_EQ(s.kind, Json::Object);
   for (const char* k : {"case", "particles", "fluid_steps", "end_time_reached", "wall_seconds",
                         "fluid_particle_steps_per_second", "threads", "version", "bodies",
-                        "leaked_particles", "status"})
+                        "leaked_particles", "status", "warnings"})
     EXPECT_TRUE(s.has(k)) << "summary.json lacks '" << k << "'";
   if (HasFailure()) return;
   EXPECT_EQ(s["case"].str, "elastic_cylinder_entry");
