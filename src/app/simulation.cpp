@@ -362,6 +362,8 @@ std::vector<std::string> Simulation::probe_headers() const {
   for (const ProbeConfig& pc : cfg_.output.probes) {
     if (pc.kind == "pressure" || pc.kind == "body_pressure") {
       h.push_back(pc.name + " [Pa]");
+    } else if (pc.kind == "max_speed") {
+      h.push_back(pc.name + " [m/s]");
     } else if (pc.kind == "body_displacement") {
       h.push_back(pc.name + "_x [m]");
       h.push_back(pc.name + "_y [m]");
@@ -396,6 +398,10 @@ std::vector<double> Simulation::probe_row() const {
                                                          : -std::numeric_limits<double>::max();
       });
       row.push_back(ymax > -1e300 ? ymax + 0.5 * dx : 0.0);
+    } else if (pc.kind == "max_speed") {
+      // Largest fluid particle speed: spurious currents in water meant to be at rest.
+      row.push_back(std::sqrt(exec_.max_of(
+          fluid_.size(), [&](std::size_t i) { return norm2(fluid_.v[i]); }, 0.0)));
     } else if (pc.kind == "body_pressure") {
       const AttachedProbe& a = attached_[k];
       const std::size_t s = contact_offset_[a.body] + a.particle;

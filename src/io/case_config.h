@@ -109,7 +109,8 @@ struct BodyConfig {
 struct ProbeConfig {
   std::string name;
   // "pressure" (kernel-weighted at position), "surge_front" (largest fluid x),
-  // "water_height" (at x), "body_pressure" (attached to body surface near position),
+  // "water_height" (at x), "max_speed" (largest fluid particle speed),
+  // "body_pressure" (attached to body surface near position),
   // "body_displacement" (displacement of the body particle nearest position)
   std::string kind;
   Vec2 position;

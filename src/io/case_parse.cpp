@@ -26,8 +26,8 @@ const std::vector<std::string> kKernels{"wendland_c2", "cubic_spline"};
 const std::vector<std::string> kKinds{"elastic", "rigid_fixed", "rigid_prescribed", "rigid_free"};
 const std::vector<std::string> kSchemes{"tl_sfpm", "tlsph"};
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
-const std::vector<std::string> kProbeKinds{"pressure", "surge_front", "water_height",
-                                           "body_pressure", "body_displacement"};
+const std::vector<std::string> kProbeKinds{"pressure",  "surge_front",   "water_height",
+                                           "max_speed", "body_pressure", "body_displacement"};
 const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
 const std::vector<std::string> kModels{"svk"};
@@ -411,11 +411,11 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     pc.kind = p.choice("kind", kProbeKinds).value_or("");
     if (pc.kind.empty())
       p.missing("kind",
-                "one of 'pressure', 'surge_front', 'water_height', 'body_pressure', "
-                "'body_displacement'");
+                "one of 'pressure', 'surge_front', 'water_height', 'max_speed', "
+                "'body_pressure', 'body_displacement'");
     const std::string ctx = "for probe kind '" + pc.kind + "'";
     if (pc.kind == "pressure") p.allow({"name", "kind", "position"}, ctx);
-    if (pc.kind == "surge_front") p.allow({"name", "kind"}, ctx);
+    if (pc.kind == "surge_front" || pc.kind == "max_speed") p.allow({"name", "kind"}, ctx);
     if (pc.kind == "water_height") p.allow({"name", "kind", "x"}, ctx);
     const bool on_body = pc.kind == "body_pressure" || pc.kind == "body_displacement";
     if (on_body) p.allow({"name", "kind", "body", "position"}, ctx);

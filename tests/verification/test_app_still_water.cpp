@@ -29,6 +29,9 @@ TEST(StillWater, StaysHydrostaticAndAtRest) {
     }
   }
   const double p_bottom = sim.probe_value(0);
+  double vmax_now = 0.0;
+  for (const Vec2& v : sim.fluid().v) vmax_now = std::max(vmax_now, norm(v));
+  EXPECT_DOUBLE_EQ(sim.probe_value(2), vmax_now);  // the case's max_speed probe
   const double expected = rho * g * (H - 0.01);
   RecordProperty("p_bottom_Pa", std::to_string(p_bottom));
   RecordProperty("vmax_over_sqrt_gH", std::to_string(vmax_late / std::sqrt(g * H)));
