@@ -9,7 +9,6 @@
 
 #include "app/plot_command.h"
 #include "app/run_options.h"
-#include "app/setup_warnings.h"
 #include "app/simulation.h"
 #include "core/error.h"
 #include "io/case_file.h"
@@ -75,10 +74,13 @@ int run_command(int argc, char** argv) {
   if (cmd == "plot") return plot_command(path);
   CaseConfig cfg = load_case(path);
   if (opt.dx) rescale_resolution(cfg, *opt.dx);
-  if (opt.end_time) cfg.numerics.end_time = *opt.end_time;
-  for (const std::string& w : setup_warnings(cfg)) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  // Set-up warnings go out after the particles are built and before any time step.
+  auto warn = [](const Simulation& sim) {
+    for (const std::string& w : sim.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  };
   if (cmd == "check") {
     Simulation sim(std::move(cfg), silent_options(1));
+    warn(sim);
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
     std::printf(")\n");
@@ -86,6 +88,7 @@ int run_command(int argc, char** argv) {
   }
   if (opt.out_dir.empty()) opt.out_dir = "results";
   Simulation sim(std::move(cfg), opt);
+  warn(sim);
   const int code = sim.run();
   if (code == 0 && opt.write_output && !sim.config().output.plot.empty()) {
     const int pc = plot_command(opt.out_dir);

@@ -1,5 +1,7 @@
 #include "app/simulation.h"
 
+#include "app/setup_warnings.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -38,6 +40,7 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
       opt_(options),
       exec_(options.threads > 0 ? options.threads : Executor::hardware_threads()) {
   if (opt_.end_time) cfg_.numerics.end_time = *opt_.end_time;
+  warnings_ = setup_warnings(cfg_);
   const NumericsConfig& num = cfg_.numerics;
   kernel_f_ = Kernel(num.kernel, num.h_over_dx * num.dx);
   eos_ = TaitEos{cfg_.fluid.density, cfg_.fluid.sound_speed, cfg_.fluid.gamma};

@@ -58,6 +58,8 @@ class Simulation {
   const ContactParticles& contact() const { return contact_; }
   BodyLoad body_load(std::size_t b) const { return loads_[b]; }
   long leaked_particles() const { return leaked_; }
+  // Set-up warnings for this case (app/setup_warnings.h), computed once at construction.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   const StepLimit& last_step_limit() const { return limit_; }
   long solid_substeps() const { return solid_substeps_; }
   // Linear momentum of fluid + non-fixed bodies [kg m/s per m].
@@ -102,6 +104,7 @@ class Simulation {
   long steps_ = 0;
   long solid_substeps_ = 0;
   long leaked_ = 0;
+  std::vector<std::string> warnings_;
   StepLimit limit_;
   std::vector<std::vector<Vec2>> f_old_;  // step() scratch: fluid force before the step
 };

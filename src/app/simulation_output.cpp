@@ -9,7 +9,6 @@
 #include <fstream>
 #include <iostream>
 
-#include "app/setup_warnings.h"
 #include "app/simulation.h"
 #include "app/validation_report.h"
 #include "core/error.h"
@@ -210,7 +209,7 @@ int Simulation::run() {
   summary.set("threads", exec_.threads());
   summary.set("neighbour_rebuilds", lists_->rebuilds());
   summary.set("leaked_particles", leaked_);
-  summary.set("warnings", setup_warnings(cfg_));  // the set-up warnings printed before the run
+  summary.set("warnings", warnings_);  // the set-up warnings printed before the run
   std::vector<JsonObject> loads;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     JsonObject o;
