@@ -3,8 +3,8 @@
 // s = side/n, so the lattice covers the box exactly (s = dx when the side is a multiple
 // of dx, which case files should ensure) and the volumes sum to the box area.
 #pragma once
+#include "core/box.h"
 #include "geometry/particle_lattice.h"
-#include "io/case_config.h"
 
 namespace slamsph {
 

@@ -4,8 +4,8 @@
 // tank → tank_walls(box as the inner box, layers; 0 → 4, open_top).
 #pragma once
 #include "geometry/particle_lattice.h"
+#include "geometry/shape.h"
 #include "geometry/shape_bounds.h"
-#include "io/case_config.h"
 
 namespace slamsph {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/case_config.h"
+#include "geometry/shape.h"
 
 namespace slamsph {
 

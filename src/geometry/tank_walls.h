@@ -5,8 +5,8 @@
 // spacing is side/round(side/dx) (= dx when the inner box is a multiple of dx); through
 // the thickness it is dx. layer = 0 for the row touching the fluid, increasing outwards.
 #pragma once
+#include "core/box.h"
 #include "geometry/particle_lattice.h"
-#include "io/case_config.h"
 
 namespace slamsph {
 

@@ -7,14 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "core/box.h"
 #include "core/kernel.h"
 #include "core/vec.h"
+#include "geometry/shape.h"
 
 namespace slamsph {
-
-struct Box {
-  Vec2 min, max;
-};
 
 struct NumericsConfig {
   double dx = 0.0;         // fluid particle spacing [m] (required)
@@ -53,21 +51,6 @@ struct MaterialConfig {
   double av_alpha = 1.0;        // Monaghan artificial viscosity α [-] (spec §3)
   double av_beta = 0.0;         // Monaghan artificial viscosity β [-]
   double hourglass = 0.1;       // hourglass control coefficient [-] (0 = off)
-};
-
-struct ShapeConfig {
-  // "rectangle" (box), "disc" (centre, radius), "ring" (centre, inner/outer radius,
-  // layers through the thickness), "polygon" (vertices), "tank" (inner box, wall layers,
-  // open top).
-  std::string type;
-  Box box;
-  Vec2 centre;
-  double radius = 0.0;
-  double inner_radius = 0.0;
-  double outer_radius = 0.0;
-  int layers = 0;  // ring: layers through the thickness; tank: wall layers (default 4)
-  std::vector<Vec2> vertices;
-  bool open_top = true;  // tank
 };
 
 struct ClampConfig {

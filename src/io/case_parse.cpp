@@ -11,6 +11,7 @@
 #include "geometry/shape_bounds.h"
 #include "io/case_file.h"
 #include "io/case_reader.h"
+#include "solid/body_kind.h"
 
 namespace slamsph {
 
@@ -23,8 +24,15 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 const std::vector<std::string> kKernels{"wendland_c2", "cubic_spline"};
-const std::vector<std::string> kKinds{"elastic", "rigid_fixed", "rigid_prescribed", "rigid_free"};
-const std::vector<std::string> kSchemes{"tl_sfpm", "tlsph"};
+// Body kinds and schemes: the one table of names in solid/body_kind.h.
+template <class Table>
+std::vector<std::string> names_of(const Table& table) {
+  std::vector<std::string> out;
+  for (const auto& entry : table) out.emplace_back(entry.first);
+  return out;
+}
+const std::vector<std::string> kKinds = names_of(kBodyKindNames);
+const std::vector<std::string> kSchemes = names_of(kSolidSchemeNames);
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
 const std::vector<std::string> kProbeKinds{"pressure",  "surge_front",   "water_height",
                                            "max_speed", "body_pressure", "body_displacement"};

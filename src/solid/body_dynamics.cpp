@@ -18,24 +18,6 @@
 namespace slamsph {
 namespace {
 
-BodyKind parse_kind(const std::string& s, const std::string& body) {
-  if (s == "elastic") return BodyKind::Elastic;
-  if (s == "rigid_fixed") return BodyKind::RigidFixed;
-  if (s == "rigid_prescribed") return BodyKind::RigidPrescribed;
-  if (s == "rigid_free") return BodyKind::RigidFree;
-  throw InputError("body '" + body + "': unknown kind '" + s + "'");
-}
-
-SolidScheme parse_scheme(const std::string& s, const std::string& body) {
-  if (s == "tl_sfpm") return SolidScheme::TlSfpm;
-  if (s == "tlsph") return SolidScheme::TlSph;
-  throw InputError("body '" + body + "': unknown scheme '" + s + "'");
-}
-
-bool inside(const Box& b, Vec2 p) {
-  return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y;
-}
-
 // Scratch for the internal-force evaluation.
 struct ForceScratch {
   std::vector<Vec2> f_stress;
@@ -119,18 +101,17 @@ void refresh_internal_forces(SolidBody& body, const Executor& exec) {
   internal_forces(body, body.v, exec, s);
 }
 
-void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* mat,
-                const NumericsConfig& num) {
+void setup_body(SolidBody& body, const BodySetup& cfg) {
   const std::size_t n = body.size();
   body.name = cfg.name;
-  body.kind = parse_kind(cfg.kind, cfg.name);
-  body.scheme = parse_scheme(cfg.scheme, cfg.name);
-  body.dx = cfg.dx > 0.0 ? cfg.dx : num.dx;
+  body.kind = cfg.kind;
+  body.scheme = cfg.scheme;
+  body.dx = cfg.dx;
   if (!(body.dx > 0.0)) throw InputError("body '" + cfg.name + "': particle spacing dx <= 0");
-  const double hdx = cfg.h_over_dx > 0.0 ? cfg.h_over_dx : num.h_over_dx;
-  body.kernel = Kernel(num.kernel, hdx * body.dx);
+  const double hdx = cfg.h_over_dx;
+  body.kernel = Kernel(cfg.kernel, hdx * body.dx);
   body.feels_gravity = cfg.gravity;
-  body.cfl = num.solid_cfl;
+  body.cfl = cfg.solid_cfl;
   if (body.x.size() != n) body.x = body.X;
   if (body.m.size() != n || body.V0.size() != n || body.rho0.size() != n)
     throw InputError("body '" + cfg.name + "': geometry did not set m, V0, rho0");
@@ -144,8 +125,8 @@ void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* ma
   // Clamps.
   body.clamped.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (cfg.clamp.box && inside(*cfg.clamp.box, body.X[i])) body.clamped[i] = 1;
-    for (int l : cfg.clamp.layers)
+    if (cfg.clamp_box && inside(*cfg.clamp_box, body.X[i])) body.clamped[i] = 1;
+    for (int l : cfg.clamp_layers)
       if (body.layer[i] == l) body.clamped[i] = 1;
   }
 
@@ -157,8 +138,7 @@ void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* ma
   r.omega = cfg.angular_velocity;
   r.acc = Vec2{};
   r.alpha = 0.0;
-  body.motion.clear();
-  for (const MotionPoint& p : cfg.motion) body.motion.push_back({p.t, p.v});
+  body.motion = cfg.motion;
   std::stable_sort(
       body.motion.begin(), body.motion.end(),
       [](const PrescribedVelocity& a, const PrescribedVelocity& b) { return a.t < b.t; });
@@ -190,41 +170,33 @@ void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* ma
   }
 
   // Elastic body.
-  if (mat == nullptr)
-    throw InputError("body '" + cfg.name + "': elastic body needs a material ('" + cfg.material +
-                     "' not found)");
-  if (mat->model != "svk")
-    throw InputError("body '" + cfg.name + "': material model '" + mat->model +
-                     "' not implemented (only 'svk')");
-  if (!(mat->youngs_modulus > 0.0) || !(mat->poisson_ratio >= 0.0 && mat->poisson_ratio < 0.5))
-    throw InputError("body '" + cfg.name + "': material '" + mat->name +
+  if (!cfg.material) throw InputError("body '" + cfg.name + "': elastic body needs a material");
+  const ElasticMaterialInput& mat = *cfg.material;
+  if (!(mat.youngs_modulus > 0.0) || !(mat.poisson_ratio >= 0.0 && mat.poisson_ratio < 0.5))
+    throw InputError("body '" + cfg.name + "': material '" + mat.name +
                      "' needs youngs_modulus > 0 and 0 <= poisson_ratio < 0.5");
   SolidMaterial& sm = body.material;
-  sm.model = mat->model;
-  sm.density = mat->density > 0.0 ? mat->density : body.rho0.empty() ? 0.0 : body.rho0[0];
-  sm.youngs_modulus = mat->youngs_modulus;
-  sm.poisson_ratio = mat->poisson_ratio;
-  sm.svk = svk_from_young(mat->youngs_modulus, mat->poisson_ratio);
-  sm.av_alpha = mat->av_alpha;
-  sm.av_beta = mat->av_beta;
-  sm.hourglass = mat->hourglass;
-  const double nu = mat->poisson_ratio;
+  sm.model = "svk";
+  sm.density = mat.density > 0.0 ? mat.density : body.rho0.empty() ? 0.0 : body.rho0[0];
+  sm.youngs_modulus = mat.youngs_modulus;
+  sm.poisson_ratio = mat.poisson_ratio;
+  sm.svk = svk_from_young(mat.youngs_modulus, mat.poisson_ratio);
+  sm.av_alpha = mat.av_alpha;
+  sm.av_beta = mat.av_beta;
+  sm.hourglass = mat.hourglass;
+  const double nu = mat.poisson_ratio;
   sm.sound_speed =
-      std::sqrt(mat->youngs_modulus * (1.0 - nu) / (sm.density * (1.0 + nu) * (1.0 - 2.0 * nu)));
+      std::sqrt(mat.youngs_modulus * (1.0 - nu) / (sm.density * (1.0 + nu) * (1.0 - 2.0 * nu)));
 
-  if (cfg.initial_profile == "cantilever_mode") {
-    const double clamp_edge = cfg.clamp.box ? cfg.clamp.box->max.x : cfg.shape.box.min.x;
-    const double length = cfg.shape.box.max.x - clamp_edge;
-    if (!(length > 0.0))
+  if (cfg.cantilever_mode) {
+    const CantileverModeInput& cm = *cfg.cantilever_mode;
+    if (!(cm.length > 0.0))
       throw InputError("body '" + cfg.name +
                        "': cantilever_mode needs shape.box.max.x beyond the clamp");
-    const double c0 = bulk_sound_speed(mat->youngs_modulus, nu, sm.density);
+    const double c0 = bulk_sound_speed(mat.youngs_modulus, nu, sm.density);
     for (std::size_t i = 0; i < n; ++i)
       if (!body.clamped[i])
-        body.v[i].y += cantilever_mode_velocity(body.X[i].x - clamp_edge, length, cfg.mode_vf, c0);
-  } else if (!cfg.initial_profile.empty()) {
-    throw InputError("body '" + cfg.name + "': unknown initial_profile '" + cfg.initial_profile +
-                     "'");
+        body.v[i].y += cantilever_mode_velocity(body.X[i].x - cm.clamp_edge, cm.length, cm.vf, c0);
   }
   for (std::size_t i = 0; i < n; ++i)
     if (body.clamped[i]) body.v[i] = Vec2{};

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/vec.h"
-#include "io/case_config.h"
+#include "solid/body_setup.h"
 #include "solid/solid_body.h"
 
 namespace slamsph {
@@ -23,10 +23,10 @@ class Executor;
 // dx, kernel, gravity flag, clamps, initial velocities (velocity + angular_velocity about the
 // centre of mass, plus the "cantilever_mode" profile), the reference neighbour sets and
 // operators, F = I, P = 0, the rigid state (mass, centre of mass, inertia from the particles
-// unless given) and the prescribed-motion table. `mat` is required for elastic bodies.
-// Throws InputError for inconsistent input (message names the body).
-void setup_body(SolidBody& body, const BodyConfig& cfg, const MaterialConfig* mat,
-                const NumericsConfig& num);
+// unless given) and the prescribed-motion table (sorted by time). `cfg.material` is
+// required for elastic bodies. Throws InputError for inconsistent input (message names the
+// body).
+void setup_body(SolidBody& body, const BodySetup& cfg);
 
 // Δt_s = CFL · h / (c_s sqrt(1 + α_hg) + max|v|) (spec §3; α_hg the hourglass coefficient)
 // for elastic bodies; +inf for rigid kinds.

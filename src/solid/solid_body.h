@@ -18,12 +18,10 @@
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/vec.h"
+#include "solid/body_kind.h"
 #include "solid/materials/st_venant_kirchhoff.h"
 
 namespace slamsph {
-
-enum class BodyKind { Elastic, RigidFixed, RigidPrescribed, RigidFree };
-enum class SolidScheme { TlSfpm, TlSph };
 
 // Rigid-body state (free or prescribed motion), about the centre of mass.
 struct RigidState {

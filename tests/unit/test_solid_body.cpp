@@ -20,7 +20,7 @@ namespace {
 constexpr double kDx = 0.005;
 const Executor kExec(1);
 
-SolidBody rigid_body(const std::string& kind, BodyConfig cfg = {}) {
+SolidBody rigid_body(const std::string& kind, BodySetup cfg = {}) {
   SolidBody b;
   b.X = box_lattice(4, 2, kDx);
   b.x = b.X;
@@ -30,8 +30,8 @@ SolidBody rigid_body(const std::string& kind, BodyConfig cfg = {}) {
     b.m.push_back(2000.0 * kDx * kDx);
   }
   cfg.name = "rigid";
-  cfg.kind = kind;
-  setup_body(b, cfg, nullptr, numerics(kDx));
+  cfg.kind = body_kind_from_name(kind).value();
+  setup_body(b, with_spacing(cfg, kDx));
   return b;
 }
 
@@ -39,11 +39,9 @@ SolidBody rigid_body(const std::string& kind, BodyConfig cfg = {}) {
 
 TEST(SolidBodySetup, ClampsAndCantileverMode) {
   const double H = 0.02, L = 0.2, clamp = 0.06;
-  BodyConfig cfg;
-  cfg.shape.box = {{-clamp, -H / 2}, {L, H / 2}};
-  cfg.clamp.box = Box{{-1.0, -1.0}, {0.0, 1.0}};
-  cfg.initial_profile = "cantilever_mode";
-  cfg.mode_vf = 0.01;
+  BodySetup cfg;
+  cfg.clamp_box = Box{{-1.0, -1.0}, {0.0, 1.0}};
+  cfg.cantilever_mode = CantileverModeInput{0.0, L, 0.01};
   const int nx = static_cast<int>(std::lround((L + clamp) / kDx));
   SolidBody b =
       make_body(box_lattice(nx, 4, kDx, {-clamp, -H / 2}), kDx, "tl_sfpm", plate_material(), cfg);
@@ -81,8 +79,8 @@ TEST(SolidBodySetup, StableStepAndSubSteps) {
 }
 
 TEST(SolidBodySetup, ClampedParticlesStayPut) {
-  BodyConfig cfg;
-  cfg.clamp.box = Box{{-1, -1}, {2 * kDx, 1}};
+  BodySetup cfg;
+  cfg.clamp_box = Box{{-1, -1}, {2 * kDx, 1}};
   SolidBody b = make_body(box_lattice(12, 4, kDx), kDx, "tl_sfpm", plate_material(), cfg);
   for (Vec2& f : b.f_fluid) f = {0.0, -50.0};
   advance_body(b, 0.0, 20 * stable_time_step(b), {0.0, -9.81}, kExec);
@@ -116,7 +114,7 @@ TEST(SolidBodyRigid, PrescribedTable) {
   EXPECT_NEAR(prescribed_velocity(tab, -1.0).x, 0.0, 1e-15);
   // ∫_0.5^2 v_x = 0.75 (ramp) + 2 (held) = 2.75.
   EXPECT_NEAR(prescribed_displacement(tab, 0.5, 2.0).x, 2.75, 1e-14);
-  BodyConfig cfg;
+  BodySetup cfg;
   cfg.motion = {{0.0, {0.0, 0.0}}, {1.0, {2.0, -1.0}}};
   SolidBody b = rigid_body("rigid_prescribed", cfg);
   double t = 0.0;
@@ -130,7 +128,7 @@ TEST(SolidBodyRigid, PrescribedTable) {
 }
 
 TEST(SolidBodyRigid, FreeBodyUnderForceAndTorque) {
-  BodyConfig cfg;
+  BodySetup cfg;
   SolidBody b = rigid_body("rigid_free", cfg);
   const double M = b.rigid.mass, I = b.rigid.inertia;
   EXPECT_NEAR(M, 8 * 2000.0 * kDx * kDx, 1e-15);
@@ -154,7 +152,7 @@ TEST(SolidBodyRigid, FreeBodyUnderForceAndTorque) {
 
 TEST(SolidBodyDynamics, FreeSpinningBlockConservesMomentumAndEnergy) {
   for (const char* scheme : {"tl_sfpm", "tlsph"}) {
-    BodyConfig cfg;
+    BodySetup cfg;
     cfg.velocity = {0.3, -0.2};
     cfg.angular_velocity = 40.0;
     SolidBody b =

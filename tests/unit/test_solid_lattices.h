@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/vec.h"
-#include "io/case_config.h"
 #include "solid/body_dynamics.h"
+#include "solid/body_setup.h"
 #include "solid/solid_body.h"
 
 namespace slamsph::testing {
@@ -49,8 +49,8 @@ inline std::vector<Vec2> perturbed_lattice(int nx, int ny, double dx, double amp
   return X;
 }
 
-inline MaterialConfig plate_material(double hourglass = 0.0, double av_alpha = 1.0) {
-  MaterialConfig m;
+inline ElasticMaterialInput plate_material(double hourglass = 0.0, double av_alpha = 1.0) {
+  ElasticMaterialInput m;
   m.name = "rubber";
   m.density = 1000.0;
   m.youngs_modulus = 2.0e6;
@@ -61,18 +61,18 @@ inline MaterialConfig plate_material(double hourglass = 0.0, double av_alpha = 1
   return m;
 }
 
-inline NumericsConfig numerics(double dx) {
-  NumericsConfig n;
-  n.dx = dx;
-  n.h_over_dx = 1.3;
-  n.solid_cfl = 0.5;
-  n.gravity = {0.0, 0.0};
-  return n;
+// Spacing dx, h = 1.3 dx, solid CFL 0.5.
+inline BodySetup with_spacing(BodySetup cfg, double dx) {
+  cfg.name = cfg.name.empty() ? "test" : cfg.name;
+  cfg.dx = dx;
+  cfg.h_over_dx = 1.3;
+  cfg.solid_cfl = 0.5;
+  return cfg;
 }
 
 // An elastic body on positions X (volumes V0 or dx² each) set up through setup_body.
 inline SolidBody make_body(const std::vector<Vec2>& X, double dx, const std::string& scheme,
-                           const MaterialConfig& mat, BodyConfig cfg = {},
+                           const ElasticMaterialInput& mat, BodySetup cfg = {},
                            const std::vector<double>& V0 = {}) {
   SolidBody b;
   b.X = X;
@@ -83,11 +83,11 @@ inline SolidBody make_body(const std::vector<Vec2>& X, double dx, const std::str
     b.rho0.push_back(mat.density);
     b.m.push_back(mat.density * v);
   }
-  cfg.name = cfg.name.empty() ? "test" : cfg.name;
-  cfg.scheme = scheme;
-  cfg.material = mat.name;
-  cfg.dx = dx;
-  setup_body(b, cfg, &mat, numerics(dx));
+  cfg = with_spacing(cfg, dx);
+  cfg.kind = BodyKind::Elastic;
+  cfg.scheme = solid_scheme_from_name(scheme).value();
+  cfg.material = mat;
+  setup_body(b, cfg);
   return b;
 }
 

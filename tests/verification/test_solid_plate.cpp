@@ -39,14 +39,10 @@ PlateResult run_plate(const char* scheme, int layers, double hourglass, double a
                       double periods = 2.0) {
   const double H = 0.02, L = 0.2, clamp = 0.06, dx = H / layers;
   const int nx = static_cast<int>(std::lround((L + clamp) / dx));
-  const MaterialConfig mat = plate_material(hourglass, av_alpha);
-  BodyConfig cfg;
-  cfg.kind = "elastic";
-  cfg.shape.type = "rectangle";
-  cfg.shape.box = {{-clamp, -H / 2}, {L, H / 2}};
-  cfg.clamp.box = Box{{-clamp - dx, -H}, {0.0, H}};
-  cfg.initial_profile = "cantilever_mode";
-  cfg.mode_vf = 0.01;
+  const ElasticMaterialInput mat = plate_material(hourglass, av_alpha);
+  BodySetup cfg;
+  cfg.clamp_box = Box{{-clamp - dx, -H}, {0.0, H}};
+  cfg.cantilever_mode = CantileverModeInput{0.0, L, 0.01};  // clamp edge at x = 0
   cfg.gravity = false;
   SolidBody b = make_body(box_lattice(nx, layers, dx, {-clamp, -H / 2}), dx, scheme, mat, cfg);
   const char* th = std::getenv("SLAMSPH_THREADS");

@@ -31,7 +31,7 @@ struct BarResult {
 BarResult run_bar(const char* scheme, int layers, double v0) {
   const double L = 0.2, H = 0.02, dx = H / layers;
   const int nx = static_cast<int>(std::lround(L / dx));
-  BodyConfig cfg;
+  BodySetup cfg;
   cfg.gravity = false;
   SolidBody b = make_body(box_lattice(nx, layers, dx), dx, scheme, plate_material(0.1), cfg);
   for (std::size_t i = 0; i < b.size(); ++i) b.v[i] = {v0 * (b.X[i].x - L / 2) / (L / 2), 0.0};

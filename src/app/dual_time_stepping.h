@@ -1,0 +1,39 @@
+// Dual time stepping (spec §6): the bodies advance over the fluid step [t_n, t_n + Δt]
+// holding the fluid force F_n of the last evaluation, each elastic body sub-cycled by its
+// own stable step (solid/body_dynamics.h: n = ceil(Δt / Δt_s) equal sub-steps); after the
+// fluid pass gives F_n+1, each body is kicked by Δt/2 (F_n+1 - F_n)
+// (coupling/fluid_force_correction.h), so it receives exactly the impulse the fluid gave
+// up. With the switch off (or no fluid to sub-cycle within) the bodies' stable steps join
+// the fluid step's limit (app/time_step_limit.h) and every body takes one step per fluid
+// step: the global-step scheme.
+#pragma once
+#include <vector>
+
+#include "core/vec.h"
+#include "solid/solid_body.h"
+
+namespace slamsph {
+
+class Executor;
+
+class DualTimeStepping {
+ public:
+  explicit DualTimeStepping(bool enabled) : enabled_(enabled) {}
+
+  // Whether the bodies' stable steps limit the fluid step (no sub-cycling).
+  bool bodies_share_step(std::size_t fluid_particles) const {
+    return !enabled_ || fluid_particles == 0;
+  }
+  // Advances every body over [t, t + dt] with its current f_fluid held (remembered for
+  // correct()); returns the number of elastic sub-steps taken.
+  long advance(std::vector<SolidBody>& bodies, double t, double dt, Vec2 gravity,
+               const Executor& exec);
+  // After the bodies' f_fluid was replaced by the new evaluation.
+  void correct(std::vector<SolidBody>& bodies, double dt) const;
+
+ private:
+  bool enabled_;
+  std::vector<std::vector<Vec2>> f_held_;  // the fluid force each body was advanced with
+};
+
+}  // namespace slamsph

@@ -1,0 +1,140 @@
+#include "app/fsi_stepper.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "coupling/contact_rates.h"
+#include "coupling/leak_counter.h"
+#include "coupling/virtual_pressure.h"
+#include "fluid/gsph_fluid_rates.h"
+
+namespace slamsph {
+
+FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor& exec)
+    : prm_(params), sys_(std::move(system)), exec_(exec), dual_(params.dual_time_stepping) {
+  const double skin = prm_.neighbour_skin * sys_.kernel_c.support();
+  lists_ =
+      std::make_unique<InteractionLists>(sys_.kernel_f.support(), sys_.kernel_c.support(), skin);
+  loads_.assign(sys_.bodies.size(), BodyLoad{});
+  evaluate_rates();
+}
+
+// The order of the operators is documented in the header; do not reorder.
+void FsiStepper::evaluate_rates() {
+  FluidParticles& fluid = sys_.fluid;
+  ContactParticles& contact = sys_.contact;
+  gather_body_state(contact, sys_.layout, sys_.bodies);
+  lists_->update(fluid, contact, exec_);
+  const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity};
+  const ContactParams cp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity};
+  if (fluid.size() > 0) {
+    compute_virtual_state(contact, fluid, lists_->cf(), sys_.kernel_c, sys_.eos, prm_.gravity,
+                          exec_);
+    compute_gsph_fluid_rates(fluid, lists_->ff(), sys_.kernel_f, gp, exec_);
+    add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_);
+    compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_);
+    leaked_ = update_leak_flags(fluid, contact, lists_->fc(), exec_);
+  }
+  scatter_contact_forces(contact, sys_.layout, sys_.bodies);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) {
+    BodyLoad load;
+    for (const Vec2& f : sys_.bodies[b].f_fluid) load.total += f;
+    loads_[b] = load;
+  }
+  for (std::size_t c = 0; c < contact.size(); ++c)
+    loads_[contact.body[c]].viscous += contact.force_viscous[c];
+}
+
+void FsiStepper::step() {
+  FluidParticles& f = sys_.fluid;
+  const StepLimitParams sp{prm_.cfl, sys_.eos.c0, prm_.end_time, dual_.bodies_share_step(f.size())};
+  limit_ = choose_time_step(f, sys_.bodies, sys_.kernel_f, sp, exec_);
+  const double dt = limit_.dt;
+  if (!(dt >= prm_.dt_floor)) {
+    std::ostringstream os;
+    os << "time step " << dt << " s fell below numerics.dt_floor = " << prm_.dt_floor
+       << " s at t = " << time_ << " s; limiting criterion: " << describe_limit();
+    if (limited_by_fluid(limit_.limiter) && f.size() > 0) {
+      std::size_t worst = 0;
+      double best = -1.0;
+      const bool acc = limit_.limiter == StepLimiter::FluidAcceleration;
+      for (std::size_t i = 0; i < f.size(); ++i) {
+        const double q = norm2(acc ? f.a[i] : f.v[i]);
+        if (q > best) best = q, worst = i;
+      }
+      os << "; fluid particle " << f.id[worst] << " has |" << (acc ? "a" : "v")
+         << "| = " << std::sqrt(best);
+    }
+    throw DivergenceError(os.str());
+  }
+  const TaitEos& eos = sys_.eos;
+  const double hdt = 0.5 * dt;
+  exec_.for_each(f.size(), [&](std::size_t i) {
+    f.v_half[i] = f.v[i] + hdt * f.a[i];
+    f.rho_half[i] = f.rho[i] + hdt * f.drho[i];
+    f.x[i] += dt * f.v_half[i];
+    f.v[i] = f.v_half[i] + hdt * f.a[i];  // predicted, for the velocity-dependent rates
+    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
+    f.p[i] = eos.pressure(f.rho[i]);
+  });
+  solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity, exec_);
+  time_ += dt;
+  evaluate_rates();
+  dual_.correct(sys_.bodies, dt);
+  exec_.for_each(f.size(), [&](std::size_t i) {
+    f.v[i] = f.v_half[i] + hdt * f.a[i];
+    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
+    f.p[i] = eos.pressure(f.rho[i]);
+  });
+  ++steps_;
+  check_state();
+}
+
+void FsiStepper::check_state() const {
+  const FluidParticles& fluid = sys_.fluid;
+  const Box& d = prm_.domain;
+  auto bad_fluid = [&](std::size_t i) {
+    const Vec2 x = fluid.x[i];
+    const bool finite = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(fluid.v[i].x) &&
+                        std::isfinite(fluid.v[i].y) && std::isfinite(fluid.rho[i]);
+    return !finite || x.x < d.min.x || x.x > d.max.x || x.y < d.min.y || x.y > d.max.y;
+  };
+  const double any = exec_.max_of(
+      fluid.size(), [&](std::size_t i) { return bad_fluid(i) ? 1.0 : 0.0; }, 0.0);
+  if (any > 0.0) {
+    for (std::size_t i = 0; i < fluid.size(); ++i) {
+      if (!bad_fluid(i)) continue;
+      std::ostringstream os;
+      const Vec2 x = fluid.x[i];
+      const bool finite = std::isfinite(x.x) && std::isfinite(x.y);
+      os << "fluid particle " << fluid.id[i] << " at t = " << time_ << " s: ";
+      if (!finite || !std::isfinite(fluid.v[i].x) || !std::isfinite(fluid.v[i].y))
+        os << "position/velocity is not finite";
+      else if (!std::isfinite(fluid.rho[i]))
+        os << "density is not finite";
+      else
+        os << "left the domain at (" << x.x << ", " << x.y << ") m with velocity (" << fluid.v[i].x
+           << ", " << fluid.v[i].y << ") m/s";
+      os << "; last step " << limit_.dt << " s limited by " << describe_limit();
+      throw DivergenceError(os.str());
+    }
+  }
+  for (const SolidBody& b : sys_.bodies) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const Vec2 x = b.x[i];
+      if (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(b.v[i].x) &&
+          std::isfinite(b.v[i].y) && inside(d, x))
+        continue;
+      std::ostringstream os;
+      os << "body '" << b.name << "' particle " << i << " at t = " << time_ << " s: "
+         << (std::isfinite(x.x) && std::isfinite(x.y) ? "left the domain"
+                                                      : "position/velocity is not finite")
+         << "; last step " << limit_.dt << " s limited by " << describe_limit();
+      throw DivergenceError(os.str());
+    }
+  }
+}
+
+}  // namespace slamsph

@@ -1,0 +1,110 @@
+// The fluid–structure stepper: advances water, bodies and their contact by one fluid step.
+//
+// Time integration (spec §2 "a second-order integrator"): kick–drift–kick leapfrog for the
+// fluid with one fused rate evaluation per step,
+//   v+ = v + dt/2 a_n,  rho+ = rho + dt/2 drho_n,  x_n+1 = x_n + dt v+,
+//   rates a_n+1, drho_n+1 evaluated at (x_n+1, v+ + dt/2 a_n, rho+ + dt/2 drho_n),
+//   v_n+1 = v+ + dt/2 a_n+1,  rho_n+1 = rho+ + dt/2 drho_n+1.
+// Bodies advance over the same [t_n, t_n+1] with the fluid force of the last evaluation
+// held constant and are then corrected for the new force (app/dual_time_stepping.h).
+//
+// One rate evaluation runs these operators in this order (each needs the previous):
+//   1. gather_body_state         bodies → contact set (x, v, a, volume, normal)
+//   2. InteractionLists::update  Verlet lists; may reorder the fluid
+//   3. compute_virtual_state     virtual pressure/density of wetted solid particles (§4)
+//   4. compute_gsph_fluid_rates  fluid–fluid GSPH pass (§2); it ZEROES then fills a, drho,
+//                                so it must precede every other contribution to them
+//   5. add_contact_to_fluid      contact Riemann terms added to the fluid's a, drho (§4)
+//   6. compute_contact_reaction  the equal and opposite force on each contact particle
+//   7. update_leak_flags         fluid particles found inside a solid (leak counter)
+//   8. scatter_contact_forces    contact force → body.f_fluid (ghosts → their parent)
+//   9. body loads                total and viscous fluid force per body
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "app/dual_time_stepping.h"
+#include "app/time_step_limit.h"
+#include "core/box.h"
+#include "core/kernel.h"
+#include "coupling/contact_layout.h"
+#include "coupling/contact_particles.h"
+#include "coupling/interaction_lists.h"
+#include "fluid/fluid_particles.h"
+#include "fluid/tait_eos.h"
+#include "solid/solid_body.h"
+
+namespace slamsph {
+
+class Executor;
+
+// Physics parameters of the coupled step (the case builder fills them from the case).
+struct FsiParams {
+  Vec2 gravity;                    // [m/s^2]
+  double cfl = 0.25;               // fluid acoustic CFL [-]
+  double dt_floor = 1e-9;          // a step below this is divergence [s]
+  double end_time = 0.0;           // [s] (only for the step of a case where nothing moves)
+  bool dual_time_stepping = true;  // sub-cycle bodies inside a fluid step (spec §6)
+  Box domain;                      // a particle leaving it is divergence [m]
+  double limiter_omega = 3.0;      // low-dissipation limiter ω (spec §2) [-]
+  double viscosity = 0.0;          // kinematic viscosity [m^2/s]
+  double neighbour_skin = 0.2;     // Verlet skin as a fraction of the contact support [-]
+};
+
+// The particle sets and their kernels, as the case builder lays them out.
+struct FsiSystem {
+  Kernel kernel_f;  // fluid–fluid
+  Kernel kernel_c;  // fluid–solid contact: the larger h of fluid and bodies
+  TaitEos eos;
+  FluidParticles fluid;
+  std::vector<SolidBody> bodies;
+  ContactLayout layout;
+  ContactParticles contact;
+};
+
+struct BodyLoad {
+  Vec2 total;    // fluid force on the body [N/m]
+  Vec2 viscous;  // its viscous part [N/m]
+};
+
+class FsiStepper {
+ public:
+  // Evaluates the rates of the initial state (the first half kick needs them).
+  FsiStepper(const FsiParams& params, FsiSystem system, const Executor& exec);
+
+  // One fluid step with the bodies advanced inside it. Throws DivergenceError.
+  void step();
+
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  long solid_substeps() const { return solid_substeps_; }
+  long leaked_particles() const { return leaked_; }
+  const StepLimit& last_step_limit() const { return limit_; }
+  std::string describe_limit() const { return describe(limit_, sys_.bodies); }
+  BodyLoad body_load(std::size_t b) const { return loads_[b]; }
+  const std::vector<BodyLoad>& body_loads() const { return loads_; }
+  const FsiParams& params() const { return prm_; }
+  void set_end_time(double t) { prm_.end_time = t; }
+
+  const FsiSystem& system() const { return sys_; }
+  FsiSystem& system() { return sys_; }
+  const InteractionLists& lists() const { return *lists_; }
+
+ private:
+  void evaluate_rates();
+  void check_state() const;
+
+  FsiParams prm_;
+  FsiSystem sys_;
+  const Executor& exec_;
+  std::unique_ptr<InteractionLists> lists_;
+  DualTimeStepping dual_;
+  std::vector<BodyLoad> loads_;
+  StepLimit limit_;
+  double time_ = 0.0;
+  long steps_ = 0;
+  long solid_substeps_ = 0;
+  long leaked_ = 0;
+};
+
+}  // namespace slamsph

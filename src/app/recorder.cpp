@@ -1,0 +1,234 @@
+#include "app/recorder.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "app/validation_report.h"
+#include "core/parallel.h"
+#include "io/case_file.h"
+#include "io/csv_writer.h"
+#include "io/json_writer.h"
+#include "io/vtk_writer.h"
+#include "solid/body_dynamics.h"
+
+namespace slamsph {
+
+namespace {
+
+std::vector<double> vec_values(const std::vector<Vec2>& v) {
+  std::vector<double> out(2 * v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) out[2 * i] = v[i].x, out[2 * i + 1] = v[i].y;
+  return out;
+}
+
+}  // namespace
+
+Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiStepper& stepper,
+                   const ProbeSet& probes, const Executor& exec)
+    : cfg_(cfg), opt_(opt), st_(stepper), probes_(probes), exec_(exec) {
+  const double end = cfg_.numerics.end_time;
+  vtk_dt_ = cfg_.output.interval > 0.0 ? cfg_.output.interval : end / 50.0;
+  probe_dt_ = cfg_.output.probe_interval;
+  const std::size_t nb = st_.system().bodies.size();
+  peak_.assign(nb, Vec2{});
+  impulse_.assign(nb, Vec2{});
+  peak_mag_.assign(nb, 0.0);
+  peak_time_.assign(nb, 0.0);
+}
+
+Recorder::~Recorder() = default;
+
+void Recorder::start() {
+  const std::vector<SolidBody>& bodies = st_.system().bodies;
+  if (opt_.write_output) {
+    const std::string& dir = opt_.out_dir;
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/case.resolved.toml") << resolved_case_toml(cfg_);
+    if (cfg_.output.vtk) vtk_ = std::make_unique<VtkSeries>(dir);
+    if (!bodies.empty()) {
+      std::vector<std::string> h{"time [s]"};
+      for (const SolidBody& b : bodies) {
+        h.push_back(b.name + " Fx [N/m]");
+        h.push_back(b.name + " Fy [N/m]");
+        h.push_back(b.name + " Fx_pressure [N/m]");
+        h.push_back(b.name + " Fy_pressure [N/m]");
+        h.push_back(b.name + " Fx_viscous [N/m]");
+        h.push_back(b.name + " Fy_viscous [N/m]");
+      }
+      forces_ = std::make_unique<CsvWriter>(dir + "/forces.csv", h);
+      std::vector<std::string> hb{"time [s]"};
+      for (const SolidBody& b : bodies) {
+        for (const char* q : {"com_x [m]", "com_y [m]", "vel_x [m/s]", "vel_y [m/s]",
+                              "acc_x [m/s^2]", "acc_y [m/s^2]", "kinetic [J/m]", "strain [J/m]",
+                              "dissipated [J/m]", "hourglass [J/m]"})
+          hb.push_back(b.name + " " + q);
+      }
+      bodies_csv_ = std::make_unique<CsvWriter>(dir + "/bodies.csv", hb);
+    }
+    std::vector<std::string> hp{"time [s]"};
+    for (const std::string& s : probes_.headers()) hp.push_back(s);
+    hp.push_back("leaked_particles [-]");
+    probes_csv_ = std::make_unique<CsvWriter>(dir + "/probes.csv", hp);
+  }
+  prev_loads_ = st_.body_loads();
+  record_loads(0.0);
+}
+
+void Recorder::record_loads(double dt_prev) {
+  const double time = st_.time();
+  const std::vector<BodyLoad>& loads = st_.body_loads();
+  if (forces_) {
+    std::vector<double> row{time};
+    for (const BodyLoad& l : loads)
+      row.insert(row.end(), {l.total.x, l.total.y, l.total.x - l.viscous.x, l.total.y - l.viscous.y,
+                             l.viscous.x, l.viscous.y});
+    forces_->row(row);
+  }
+  for (std::size_t b = 0; b < loads.size(); ++b) {
+    const Vec2 F = loads[b].total;
+    if (norm(F) > peak_mag_[b]) peak_mag_[b] = norm(F), peak_[b] = F, peak_time_[b] = time;
+    if (dt_prev > 0.0) impulse_[b] += 0.5 * dt_prev * (F + prev_loads_[b].total);
+  }
+}
+
+void Recorder::record_probes() {
+  if (!probes_csv_) return;
+  std::vector<double> row{st_.time()};
+  for (double v : probes_.row(st_, exec_)) row.push_back(v);
+  row.push_back(static_cast<double>(st_.leaked_particles()));
+  probes_csv_->row(row);
+}
+
+void Recorder::record_bodies() {
+  if (!bodies_csv_) return;
+  std::vector<double> row{st_.time()};
+  for (const SolidBody& b : st_.system().bodies) {
+    const BodySummary m = body_summary(b);
+    const BodyEnergies e = body_energies(b);
+    row.insert(row.end(),
+               {m.com.x, m.com.y, m.mean_velocity.x, m.mean_velocity.y, m.mean_acceleration.x,
+                m.mean_acceleration.y, e.kinetic, e.strain, e.dissipated, e.hourglass});
+  }
+  bodies_csv_->row(row);
+}
+
+void Recorder::write_frame() {
+  const FsiSystem& sys = st_.system();
+  const FluidParticles& fluid = sys.fluid;
+  const double time = st_.time();
+  if (fluid.size() > 0) {
+    std::vector<PointField> ff;
+    ff.push_back({"velocity", "m/s", 2, vec_values(fluid.v), {}});
+    ff.push_back({"pressure", "Pa", 1, fluid.p, {}});
+    ff.push_back({"density", "kg/m^3", 1, fluid.rho, {}});
+    std::vector<double> id(fluid.size()), set(fluid.size(), 0.0);
+    for (std::size_t i = 0; i < fluid.size(); ++i) id[i] = static_cast<double>(fluid.id[i]);
+    ff.push_back({"id", "-", 1, id, {}});
+    ff.push_back({"set", "-", 1, set, {}});
+    std::vector<double> crossed(fluid.crossed.begin(), fluid.crossed.end());
+    ff.push_back({"crossed_solid", "-", 1, crossed, {}});  // leak counter flag (1 = crossed)
+    vtk_->write(time, "fluid", fluid.x, ff);
+  }
+  for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
+    const SolidBody& body = sys.bodies[b];
+    std::vector<PointField> bf;
+    for (SolidField& sf : solid_output_fields(body))
+      bf.push_back({sf.name, sf.unit, sf.components, std::move(sf.values), {}});
+    std::vector<double> pv(body.size()), id(body.size()), set(body.size(), double(b + 1));
+    std::vector<Vec2> force(body.size());
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      pv[i] = sys.contact.p[sys.layout.offset[b] + i];
+      id[i] = static_cast<double>(i);
+      force[i] = body.f_fluid[i];
+    }
+    bf.push_back({"contact_pressure", "Pa", 1, pv, {}});
+    bf.push_back({"fluid_force", "N/m", 2, vec_values(force), {}});
+    bf.push_back({"id", "-", 1, id, {}});
+    bf.push_back({"set", "-", 1, set, {}});
+    vtk_->write(time, body.name, body.x, bf);
+  }
+  vtk_->end_frame();
+}
+
+void Recorder::before_step() {
+  const double time = st_.time();
+  if (opt_.write_output && time >= next_probe_ - 1e-15) {
+    record_probes();
+    next_probe_ += probe_dt_;
+    if (next_probe_ <= time) next_probe_ = time + probe_dt_;
+  }
+  if (opt_.write_output && time >= next_vtk_ - 1e-15) {  // VTK frames and bodies.csv rows
+    if (vtk_) write_frame();
+    frame_step_ = st_.steps();
+    record_bodies();
+    next_vtk_ += vtk_dt_;
+  }
+  prev_loads_ = st_.body_loads();
+}
+
+void Recorder::after_step() {
+  record_loads(st_.last_step_limit().dt);
+}
+
+void Recorder::finish() {
+  if (opt_.write_output) record_probes(), record_bodies();
+  if (vtk_) write_frame();
+}
+
+void Recorder::after_divergence() {
+  if (vtk_ && st_.steps() != frame_step_) {
+    try {
+      write_frame();
+    } catch (...) {
+    }
+  }
+}
+
+void Recorder::flush() {
+  if (forces_) forces_->flush();
+  if (probes_csv_) probes_csv_->flush();
+  if (bodies_csv_) bodies_csv_->flush();
+}
+
+void Recorder::write_summary(const RunStatus& status,
+                             const std::vector<std::string>& warnings) const {
+  const FsiSystem& sys = st_.system();
+  const double wall = status.wall_seconds;
+  JsonObject summary;
+  summary.set("case", cfg_.name);
+  summary.set("version", std::string(SLAMSPH_VERSION));
+  summary.set("status", status.code == 0 ? std::string("completed") : std::string("diverged"));
+  if (status.code != 0) summary.set("failure", status.failure);
+  JsonObject counts;
+  counts.set("fluid", static_cast<long>(sys.fluid.size()));
+  for (const SolidBody& b : sys.bodies) counts.set(b.name, static_cast<long>(b.size()));
+  summary.set("particles", counts);
+  summary.set("fluid_steps", st_.steps());
+  summary.set("solid_substeps", st_.solid_substeps());
+  summary.set("dual_time_stepping", cfg_.numerics.dual_time_stepping);
+  summary.set("end_time_reached", st_.time());
+  summary.set("wall_seconds", wall);
+  const double ps = wall > 0.0 ? double(sys.fluid.size()) * double(st_.steps()) / wall : 0.0;
+  summary.set("fluid_particle_steps_per_second", ps);
+  summary.set("threads", exec_.threads());
+  summary.set("neighbour_rebuilds", st_.lists().rebuilds());
+  summary.set("leaked_particles", st_.leaked_particles());
+  summary.set("warnings", warnings);  // the set-up warnings printed before the run
+  std::vector<JsonObject> loads;
+  for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
+    JsonObject o;
+    o.set("body", sys.bodies[b].name);
+    o.set("peak_force_N_per_m", std::vector<double>{peak_[b].x, peak_[b].y});
+    o.set("peak_time_s", peak_time_[b]);
+    o.set("impulse_N_s_per_m", std::vector<double>{impulse_[b].x, impulse_[b].y});
+    loads.push_back(o);
+  }
+  summary.set("bodies", loads);
+  if (status.code == 0 && opt_.write_output) {
+    JsonObject validation;
+    if (validation_report(cfg_, opt_.out_dir, validation)) summary.set("validation", validation);
+  }
+  if (opt_.write_output) summary.write_file(opt_.out_dir + "/summary.json");
+}
+
+}  // namespace slamsph

@@ -1,0 +1,70 @@
+// The recorder: everything a run writes and remembers about its own history — the output
+// folder (case.resolved.toml, forces.csv, probes.csv, bodies.csv, the VTK series,
+// summary.json), when the next probe row and VTK frame are due, and the peak force and
+// impulse of each body. It reads the stepper's state and never changes it.
+//
+// Per step the driver calls before_step() (probe rows and VTK frames due at the current
+// time), then FsiStepper::step(), then after_step() (forces.csv row, peak, impulse by the
+// trapezoid rule over the step).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/fsi_stepper.h"
+#include "app/probes.h"
+#include "app/run_options.h"
+#include "io/case_config.h"
+
+namespace slamsph {
+
+class CsvWriter;
+class Executor;
+class VtkSeries;
+
+struct RunStatus {
+  int code = 0;         // 0 completed, 3 diverged
+  std::string failure;  // divergence message
+  double wall_seconds = 0.0;
+};
+
+class Recorder {
+ public:
+  Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiStepper& stepper,
+           const ProbeSet& probes, const Executor& exec);
+  ~Recorder();
+
+  // Creates the output folder and files (if output is on) and records the initial loads.
+  void start();
+  void before_step();
+  void after_step();
+  // The final probe and bodies rows and the last VTK frame of a completed run.
+  void finish();
+  // The state the run diverged in, as a VTK frame (unless that frame was just written).
+  void after_divergence();
+  void flush();
+  void write_summary(const RunStatus& status, const std::vector<std::string>& warnings) const;
+
+ private:
+  void record_loads(double dt_prev);
+  void record_probes();
+  void record_bodies();
+  void write_frame();
+
+  const CaseConfig& cfg_;
+  const RunOptions& opt_;
+  const FsiStepper& st_;
+  const ProbeSet& probes_;
+  const Executor& exec_;
+  std::unique_ptr<VtkSeries> vtk_;
+  std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_;
+
+  double vtk_dt_ = 0.0, probe_dt_ = 0.0;
+  double next_vtk_ = 0.0, next_probe_ = 0.0;
+  long frame_step_ = -1;              // step count at the last VTK frame
+  std::vector<BodyLoad> prev_loads_;  // loads at the start of the current step
+  std::vector<Vec2> peak_, impulse_;  // per body [N/m], [N s/m]
+  std::vector<double> peak_mag_, peak_time_;
+};
+
+}  // namespace slamsph

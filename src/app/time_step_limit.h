@@ -1,0 +1,48 @@
+// The choice of the fluid step Δt (spec §2, §3, §6) and which criterion set it. The
+// criterion is a typed value; its text is only for messages.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/kernel.h"
+#include "fluid/fluid_particles.h"
+#include "solid/solid_body.h"
+
+namespace slamsph {
+
+class Executor;
+
+enum class StepLimiter {
+  None,               // nothing limits (not yet chosen)
+  FluidAcousticCfl,   // CFL h / (c0 + max|v|) (spec §2)
+  FluidAcceleration,  // 0.25 sqrt(h / max|a|)
+  SolidCfl,           // a body's stable step, when bodies share the fluid step (spec §3, §6)
+  EndTimeFraction,    // nothing moves: end time / 100
+};
+
+struct StepLimit {
+  double dt = 0.0;
+  StepLimiter limiter = StepLimiter::None;
+  std::size_t body = 0;  // SolidCfl: the limiting body
+};
+
+// "fluid acoustic CFL", "fluid acceleration", "solid CFL (body NAME)", "end time / 100", "none".
+std::string describe(const StepLimit& lim, const std::vector<SolidBody>& bodies);
+inline bool limited_by_fluid(StepLimiter l) {
+  return l == StepLimiter::FluidAcousticCfl || l == StepLimiter::FluidAcceleration;
+}
+
+struct StepLimitParams {
+  double cfl = 0.25;               // fluid acoustic CFL number [-]
+  double c0 = 0.0;                 // artificial sound speed [m/s]
+  double end_time = 0.0;           // [s]
+  bool bodies_share_step = false;  // false under dual time stepping (app/dual_time_stepping.h)
+};
+
+// The smallest of the criteria above; the first one found wins ties.
+StepLimit choose_time_step(const FluidParticles& fluid, const std::vector<SolidBody>& bodies,
+                           const Kernel& kernel_f, const StepLimitParams& prm,
+                           const Executor& exec);
+
+}  // namespace slamsph
