@@ -104,12 +104,9 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   if (mat == nullptr)
     throw InputError(body_key(cfg, index, "material") + ": elastic body needs a material ('" +
                      bc.material + "' not found)");
-  if (mat->model != "svk")
-    throw InputError(body_key(cfg, index, "material") + ": material model '" + mat->model +
-                     "' not implemented (only 'svk')");
   s.material =
-      ElasticMaterialInput{mat->name,     mat->density, mat->youngs_modulus, mat->poisson_ratio,
-                           mat->av_alpha, mat->av_beta, mat->hourglass};
+      ElasticMaterialInput{mat->name,          mat->model,    mat->density, mat->youngs_modulus,
+                           mat->poisson_ratio, mat->av_alpha, mat->av_beta, mat->hourglass};
   if (bc.initial_profile == "cantilever_mode") {
     const double clamp_edge = bc.clamp.box ? bc.clamp.box->max.x : bc.shape.box.min.x;
     s.cantilever_mode =

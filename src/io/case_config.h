@@ -11,6 +11,7 @@
 #include "core/kernel.h"
 #include "core/vec.h"
 #include "geometry/shape.h"
+#include "solid/materials/material_law.h"
 
 namespace slamsph {
 
@@ -44,7 +45,9 @@ struct FluidConfig {
 
 struct MaterialConfig {
   std::string name;
-  std::string model = "svk";    // "svk" (St Venant–Kirchhoff, plane strain)
+  // "svk" (St Venant–Kirchhoff) or "j2_linear_hardening" (with yield_stress and
+  // hardening_modulus), parsed into the typed model (solid/materials/material_law.h).
+  MaterialModel model = SvkModel{};
   double density = 0.0;         // [kg/m^3]
   double youngs_modulus = 0.0;  // [Pa]
   double poisson_ratio = 0.0;   // [-]

@@ -38,7 +38,7 @@ const std::vector<std::string> kProbeKinds{"pressure",  "surge_front",   "water_
                                            "max_speed", "body_pressure", "body_displacement"};
 const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
-const std::vector<std::string> kModels{"svk"};
+const std::vector<std::string> kModels{"svk", "j2_linear_hardening"};
 
 // Value range of a number key. An open bound excludes the value itself.
 struct Rule {
@@ -189,11 +189,24 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
            "a table [materials." + name + "] with density, youngs_modulus, poisson_ratio",
            case_detail::describe(node));
     const Reader m(r->source(), *t, r->key_path(name), kl);
-    m.allow({"model", "density", "youngs_modulus", "poisson_ratio", "av_alpha", "av_beta",
-             "hourglass"});
+    // The model decides which keys apply; its name becomes a typed value here.
+    const std::string model = m.choice("model", kModels).value_or("svk");
+    std::vector<std::string> keys{"model",    "density", "youngs_modulus", "poisson_ratio",
+                                  "av_alpha", "av_beta", "hourglass"};
+    if (model == "j2_linear_hardening")
+      keys.insert(keys.end(), {"yield_stress", "hardening_modulus"});
+    m.allow(keys, "for material model '" + model + "'");
     MaterialConfig mc;
     mc.name = name;
-    mc.model = m.choice("model", kModels).value_or("svk");
+    if (model == "j2_linear_hardening") {
+      J2LinearHardeningModel j2;
+      j2.yield_stress = num(m, "yield_stress", positive("a positive yield stress in Pa"));
+      j2.hardening_modulus =
+          num(m, "hardening_modulus", non_negative("a hardening modulus >= 0 in Pa"));
+      mc.model = j2;
+    } else {
+      mc.model = SvkModel{};
+    }
     mc.density = num(m, "density", positive("a positive density in kg/m^3"));
     mc.youngs_modulus = num(m, "youngs_modulus", positive("a positive Young's modulus in Pa"), 0.0);
     mc.poisson_ratio =

@@ -95,7 +95,13 @@ std::string resolved_case_toml(const CaseConfig& c) {
 
   for (const auto& m : c.materials) {
     o << "\n[materials." << key(m.name) << "]\n";
-    o << "model = " << q(m.model) << "\n";
+    if (const auto* j2 = std::get_if<J2LinearHardeningModel>(&m.model)) {
+      o << "model = \"j2_linear_hardening\"\n";
+      o << "yield_stress = " << d(j2->yield_stress) << "  # [Pa]\n";
+      o << "hardening_modulus = " << d(j2->hardening_modulus) << "  # [Pa]\n";
+    } else {
+      o << "model = \"svk\"\n";
+    }
     o << "density = " << d(m.density) << "  # [kg/m^3]\n";
     if (m.youngs_modulus > 0.0) o << "youngs_modulus = " << d(m.youngs_modulus) << "  # [Pa]\n";
     o << "poisson_ratio = " << d(m.poisson_ratio) << "\n";

@@ -18,19 +18,27 @@
 namespace slamsph {
 namespace {
 
-// Scratch for the internal-force evaluation.
+// Scratch of the solid step.
 struct ForceScratch {
   std::vector<Vec2> f_stress;
   std::vector<double> heat;
+  std::vector<Mat2> F_old;  // F of the previous sub-step (swapped, not copied)
 };
 
-// F, P and f_int = stress + viscosity (with velocities vel) + hourglass; heat rate per
-// particle from the viscosity.
+// The material update of one sub-step (exactly once per sub-step, spec §3): F from the
+// current x, then the law's committing stress update (solid/stress_update.h). h is the
+// sub-step [s] (0 for the initial state at set-up).
+void update_material(SolidBody& body, double h, const Executor& exec, ForceScratch& s) {
+  std::swap(body.F, s.F_old);
+  compute_deformation_gradients(body, exec);
+  update_stress(body, s.F_old, h, exec);
+}
+
+// f_int = stress + viscosity (with velocities vel) + hourglass from the current P and F;
+// heat rate per particle from the viscosity. Reads the material state, never advances it.
 void internal_forces(SolidBody& body, std::span<const Vec2> vel, const Executor& exec,
                      ForceScratch& s) {
   const std::size_t n = body.size();
-  compute_deformation_gradients(body, exec);
-  update_stress(body, exec);
   s.f_stress.resize(n);
   s.heat.resize(n);
   body.f_av.resize(n);
@@ -70,6 +78,7 @@ void advance_elastic(SolidBody& body, double dt, Vec2 gravity, const Executor& e
       body.x[i] += h * vhalf[i];
     });
     P_old = body.P;
+    update_material(body, h, exec, s);
     internal_forces(body, vhalf, exec, s);
     exec.for_each(n, accel);
     exec.for_each(n, [&](std::size_t i) {
@@ -98,7 +107,7 @@ void advance_elastic(SolidBody& body, double dt, Vec2 gravity, const Executor& e
 void refresh_internal_forces(SolidBody& body, const Executor& exec) {
   if (!body.is_elastic()) return;
   ForceScratch s;
-  internal_forces(body, body.v, exec, s);
+  internal_forces(body, body.v, exec, s);  // from the committed P: no material update
 }
 
 void setup_body(SolidBody& body, const BodySetup& cfg) {
@@ -172,15 +181,18 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   // Elastic body.
   if (!cfg.material) throw InputError("body '" + cfg.name + "': elastic body needs a material");
   const ElasticMaterialInput& mat = *cfg.material;
+  if (const auto* j2 = std::get_if<J2LinearHardeningModel>(&mat.model))
+    if (!(j2->yield_stress > 0.0) || !(j2->hardening_modulus >= 0.0))
+      throw InputError("body '" + cfg.name + "': material '" + mat.name +
+                       "' needs yield_stress > 0 and hardening_modulus >= 0");
   if (!(mat.youngs_modulus > 0.0) || !(mat.poisson_ratio >= 0.0 && mat.poisson_ratio < 0.5))
     throw InputError("body '" + cfg.name + "': material '" + mat.name +
                      "' needs youngs_modulus > 0 and 0 <= poisson_ratio < 0.5");
   SolidMaterial& sm = body.material;
-  sm.model = "svk";
   sm.density = mat.density > 0.0 ? mat.density : body.rho0.empty() ? 0.0 : body.rho0[0];
   sm.youngs_modulus = mat.youngs_modulus;
   sm.poisson_ratio = mat.poisson_ratio;
-  sm.svk = svk_from_young(mat.youngs_modulus, mat.poisson_ratio);
+  sm.law = make_material_law(mat.model, mat.youngs_modulus, mat.poisson_ratio);
   sm.av_alpha = mat.av_alpha;
   sm.av_beta = mat.av_beta;
   sm.hourglass = mat.hourglass;
@@ -210,8 +222,12 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   body.F.assign(n, Mat2::identity());
   body.P.assign(n, Mat2{});
   body.e.assign(n, 0.0);
-  body.f_int.clear();
-  refresh_internal_forces(body, serial);
+  body.history.reset(history_fields(sm.law), n);
+  // The initial state (F from x = X, i.e. I to round-off) is the first committed update;
+  // afterwards the law is evaluated once per sub-step by advance_elastic.
+  ForceScratch s;
+  update_material(body, 0.0, serial, s);
+  internal_forces(body, body.v, serial, s);
   for (std::size_t i = 0; i < n; ++i)
     body.a[i] = body.clamped[i] ? Vec2{} : body.f_int[i] / body.m[i];
 }

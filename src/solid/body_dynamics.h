@@ -59,8 +59,9 @@ struct SolidField {
 };
 std::vector<SolidField> solid_output_fields(const SolidBody& body);
 
-// Re-evaluates F, P and the internal force from the current x and v (e.g. after the
-// caller moved particles); advance_body does this itself.
+// Re-evaluates the internal force from the committed F and P and the current v. It does not
+// update the material (the law's history advances exactly once per sub-step, inside
+// advance_body); advance_body evaluates forces itself.
 void refresh_internal_forces(SolidBody& body, const Executor& exec);
 
 }  // namespace slamsph

@@ -14,9 +14,11 @@
 
 namespace slamsph {
 
-// Parameters of an elastic body's material (spec §3; plane strain St Venant–Kirchhoff).
+// Parameters of an elastic body's material (spec §3, plane strain; the law and its own
+// parameters in `model`, solid/materials/material_law.h).
 struct ElasticMaterialInput {
-  std::string name;             // for messages
+  std::string name;  // for messages
+  MaterialModel model = SvkModel{};
   double density = 0.0;         // [kg/m^3] (0: the particles' rho0)
   double youngs_modulus = 0.0;  // [Pa]
   double poisson_ratio = 0.0;   // [-]

@@ -19,7 +19,7 @@
 #include "core/kernel.h"
 #include "core/vec.h"
 #include "solid/body_kind.h"
-#include "solid/materials/st_venant_kirchhoff.h"
+#include "solid/materials/material_law_choice.h"
 
 namespace slamsph {
 
@@ -45,11 +45,10 @@ struct PrescribedVelocity {
 
 // Material of an elastic body, resolved at setup (spec §3).
 struct SolidMaterial {
-  std::string model = "svk";
+  MaterialLaw law;              // stress update (solid/materials/material_law.h)
   double density = 0.0;         // [kg/m^3]
   double youngs_modulus = 0.0;  // [Pa]
   double poisson_ratio = 0.0;   // [-]
-  SvkParameters svk;            // Lamé parameters [Pa]
   double av_alpha = 1.0;        // Monaghan artificial viscosity α [-]
   double av_beta = 0.0;         // Monaghan artificial viscosity β [-]
   double hourglass = 0.0;       // hourglass control coefficient [-] (0 = off)
@@ -87,6 +86,7 @@ struct SolidBody {
   std::vector<Vec2> f_int;  // internal (stress + viscosity + hourglass) force [N/m]
   std::vector<Vec2> f_av;   // its artificial-viscosity part [N/m]
   std::vector<Vec2> f_hg;   // its hourglass-control part [N/m]
+  MaterialHistory history;  // the law's per-particle history fields (none for SVK)
 
   // Reference neighbour structure (built once from X).
   NeighbourList fpm_sets;                   // TL-SFPM selected sets S_i (empty for TlSph)

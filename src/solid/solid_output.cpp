@@ -1,9 +1,11 @@
 // Output fields of a solid body (declared in solid/body_dynamics.h). Equivalent strain is
 // the von Mises equivalent of the Green–Lagrange strain (plane strain, E_zz = 0):
 // sqrt(2/3 dev(E):dev(E)). Cauchy stress and pressure include the plane-strain σ_zz of the
-// material law (solid/materials/st_venant_kirchhoff.h).
+// material law (solid/stress_update.h); the law's history fields marked for output follow
+// under their own names and units.
 #include "solid/body_dynamics.h"
 #include "solid/materials/st_venant_kirchhoff.h"
+#include "solid/stress_update.h"
 
 namespace slamsph {
 
@@ -28,7 +30,7 @@ std::vector<SolidField> solid_output_fields(const SolidBody& body) {
     const Mat2& f = body.F[i];
     const Mat2& p = body.P[i];
     const Mat2 e = green_lagrange(f);
-    const CauchyStress s = cauchy_from_pk1(p, f, svk_cauchy_zz(body.material.svk, f));
+    const CauchyStress s = cauchy_from_pk1(p, f, cauchy_zz(body, i));
     F.values.insert(F.values.end(), {f.xx, f.xy, f.yx, f.yy});
     E.values.insert(E.values.end(), {e.xx, e.yy, e.xy});
     eq.values.push_back(equivalent_strain(e));
@@ -38,6 +40,10 @@ std::vector<SolidField> solid_output_fields(const SolidBody& body) {
     pr.values.push_back(pressure(s));
   }
   for (SolidField* f : {&F, &E, &eq, &P, &sig, &vm, &pr}) out.push_back(std::move(*f));
+  const MaterialHistory& h = body.history;
+  for (std::size_t k = 0; k < h.fields.size(); ++k)
+    if (h.fields[k].output)
+      out.push_back({std::string(h.fields[k].name), std::string(h.fields[k].unit), 1, h.values[k]});
   return out;
 }
 

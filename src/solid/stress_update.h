@@ -1,7 +1,10 @@
-// First Piola–Kirchhoff stress of every particle from its deformation gradient, through the
-// body's material law (spec §3). Only St Venant–Kirchhoff ("svk") exists so far; a
-// Johnson–Cook law would add its own state and a branch here.
+// The one place a body's material law is evaluated (spec §3; interface in
+// solid/materials/material_law.h). update_stress is the committing update: called exactly
+// once per solid sub-step (and once at set-up, for the initial state), it sets body.P from
+// F_old (the previous sub-step's F) and body.F, advances the history fields, and counts
+// the pass in body.history.updates. The force operators read body.P only.
 #pragma once
+#include <span>
 
 #include "solid/solid_body.h"
 
@@ -9,9 +12,13 @@ namespace slamsph {
 
 class Executor;
 
-void update_stress(SolidBody& body, const Executor& exec);
+// body.P at body.F; commits body.history. F_old has body.size() entries; dt [s] the sub-step.
+void update_stress(SolidBody& body, std::span<const Mat2> F_old, double dt, const Executor& exec);
 
-// Strain energy per unit reference volume of particle i [J/m^3].
+// Stored strain energy per unit reference volume of particle i [J/m^3] (no side effects).
 double strain_energy_density(const SolidBody& body, std::size_t i);
+
+// Out-of-plane Cauchy stress of particle i (plane strain) [Pa] (no side effects).
+double cauchy_zz(const SolidBody& body, std::size_t i);
 
 }  // namespace slamsph

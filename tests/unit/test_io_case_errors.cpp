@@ -282,3 +282,43 @@ TEST(IoCaseErrors, LoadCaseNamesTheFile) {
   }
   EXPECT_THROW(load_case(path + ".missing"), InputError);
 }
+
+TEST(IoCaseErrors, MaterialModelUnknownOrWithWrongParameters) {
+  const std::string u = replace_line(kBase, "density = 1100.0", "model = \"j2\"\ndensity = 1100.0");
+  expect_error(u, line_of(u, "model"), "materials.rubber.model", "j2_linear_hardening");
+  // j2_linear_hardening needs both of its parameters (missing: the table's line).
+  const std::string j =
+      replace_line(kBase, "density = 1100.0",
+                   "model = \"j2_linear_hardening\"\nyield_stress = 3e5\ndensity = 1100.0");
+  expect_error(j, line_of(j, "[materials.rubber]"), "materials.rubber.hardening_modulus",
+               "missing required key");
+  const std::string n =
+      replace_line(j, "yield_stress = 3e5", "yield_stress = -3e5\nhardening_modulus = 1e6");
+  expect_error(n, line_of(n, "yield_stress"), "materials.rubber.yield_stress", "must be > 0");
+  const std::string h =
+      replace_line(j, "yield_stress = 3e5", "yield_stress = 3e5\nhardening_modulus = -1");
+  expect_error(h, line_of(h, "hardening_modulus"), "materials.rubber.hardening_modulus",
+               "must be >= 0");
+  // A plasticity key on an elastic model is an unknown key, not silently ignored.
+  const std::string s =
+      replace_line(kBase, "density = 1100.0", "density = 1100.0\nyield_stress = 3e5");
+  expect_error(s, line_of(s, "yield_stress"), "materials.rubber.yield_stress",
+               "for material model 'svk'");
+}
+
+TEST(IoCaseErrors, MaterialModelParsedToTypedValue) {
+  const std::string j =
+      replace_line(kBase, "density = 1100.0",
+                   "model = \"j2_linear_hardening\"\nyield_stress = 3e5\nhardening_modulus = 2e6\n"
+                   "density = 1100.0");
+  const CaseConfig c = parse_case_string(j, "cases/j2.toml");
+  const auto* m = std::get_if<J2LinearHardeningModel>(&c.find_material("rubber")->model);
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->yield_stress, 3e5);
+  EXPECT_EQ(m->hardening_modulus, 2e6);
+  // The resolved copy names the model and its parameters and parses back to the same.
+  const CaseConfig back = parse_case_string(resolved_case_toml(c), "cases/j2.resolved.toml");
+  EXPECT_EQ(back.find_material("rubber")->model, c.find_material("rubber")->model);
+  EXPECT_TRUE(std::holds_alternative<SvkModel>(
+      parse_case_string(kBase, "cases/base.toml").find_material("rubber")->model));
+}

@@ -218,7 +218,7 @@ TEST(IoCaseParse, FullCaseValues) {
   ASSERT_EQ(c.materials.size(), 2u);
   const MaterialConfig* r = c.find_material("rubber");
   ASSERT_NE(r, nullptr);
-  EXPECT_EQ(r->model, "svk");
+  EXPECT_TRUE(std::holds_alternative<SvkModel>(r->model));
   EXPECT_DOUBLE_EQ(r->density, 1100.0);
   EXPECT_DOUBLE_EQ(r->youngs_modulus, 1.2e7);
   EXPECT_DOUBLE_EQ(r->poisson_ratio, 0.4);

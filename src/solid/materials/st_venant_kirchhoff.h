@@ -9,10 +9,15 @@
 // elastic ν(σxx + σyy): the two agree to first order in strain and the SVK value keeps the
 // von Mises stress and pressure consistent with the energy at large strain.
 //
-// A sibling law (e.g. Johnson–Cook plasticity, spec §3) provides the same outputs: P for
-// the pair force, σ_zz for the output measures, and an energy density.
+// StVenantKirchhoff below is the law object of solid/materials/material_law.h: no history,
+// its update ignores F_old and dt. The stress measures at the end of this header serve every
+// law.
 #pragma once
+#include <array>
+#include <span>
+
 #include "core/vec.h"
+#include "solid/materials/material_law.h"
 
 namespace slamsph {
 
@@ -34,6 +39,30 @@ Mat2 svk_pk1(const SvkParameters& p, const Mat2& F);
 double svk_strain_energy_density(const SvkParameters& p, const Mat2& F);
 // Out-of-plane Cauchy stress σ_zz = λ tr(E_GL) / det F [Pa].
 double svk_cauchy_zz(const SvkParameters& p, const Mat2& F);
+
+// The law object (interface: solid/materials/material_law.h).
+class StVenantKirchhoff {
+ public:
+  static constexpr std::array<HistoryField, 0> kHistory{};
+
+  explicit StVenantKirchhoff(SvkParameters p = {}) : p_(p) {}
+  const SvkParameters& parameters() const { return p_; }
+
+  // Hyperelastic: P depends on F_new only.
+  Mat2 update(const Mat2& /*F_old*/, const Mat2& F_new, double /*dt*/,
+              std::span<double> /*history*/) const {
+    return svk_pk1(p_, F_new);
+  }
+  double cauchy_zz(const Mat2& F, std::span<const double> /*history*/) const {
+    return svk_cauchy_zz(p_, F);
+  }
+  double energy_density(const Mat2& F, std::span<const double> /*history*/) const {
+    return svk_strain_energy_density(p_, F);
+  }
+
+ private:
+  SvkParameters p_;
+};
 
 // In-plane Cauchy stress plus the out-of-plane component.
 struct CauchyStress {

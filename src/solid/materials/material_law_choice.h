@@ -1,0 +1,23 @@
+// The closed set of material laws a body can use (solid/materials/material_law.h), as a
+// variant so the per-particle loops dispatch once per pass, not per particle.
+#pragma once
+#include <span>
+#include <variant>
+
+#include "solid/materials/j2_linear_hardening.h"
+#include "solid/materials/material_law.h"
+#include "solid/materials/st_venant_kirchhoff.h"
+
+namespace slamsph {
+
+using MaterialLaw = std::variant<StVenantKirchhoff, J2LinearHardening>;
+
+// The law of `model` with Young's modulus E [Pa] and Poisson's ratio ν [-] (Lamé
+// parameters λ = Eν/((1+ν)(1−2ν)), μ = E/(2(1+ν)), plane strain).
+MaterialLaw make_material_law(const MaterialModel& model, double youngs_modulus,
+                              double poisson_ratio);
+
+// The history fields the law declares.
+std::span<const HistoryField> history_fields(const MaterialLaw& law);
+
+}  // namespace slamsph
