@@ -4,7 +4,7 @@
 # UndefinedBehaviorSanitizer, and the clang-format check.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install_deps.sh
+scripts/install_deps.sh --test
 jobs=$(nproc)
 
 echo "== format check"

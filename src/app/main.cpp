@@ -1,81 +1,84 @@
-// slamsph command line: run | check | plot. Exit codes: 0 ok, 1 internal error,
-// 2 bad input (nothing computed), 3 diverged run (outputs so far kept).
+// slamsph command line: run | check | plot | help, parsed with CLI11 (Debian libcli11-dev):
+// every subcommand has its own --help listing each option and its default, options may
+// come before or after the case file, and --opt=value works as well as --opt value.
+// Exit codes: 0 ok, 1 internal error, 2 bad input (nothing computed), 3 diverged run
+// (outputs so far kept).
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 
 namespace {
 
-const char* kUsage =
-    "usage:\n"
-    "  slamsph run CASE.toml [--out DIR] [--threads N] [--end-time T] [--max-steps N]\n            "
-    "    [--dx DX] [--quiet] [--no-output]\n"
-    "  slamsph check CASE.toml      validate a case file and print its particle counts\n"
-    "  slamsph plot DIR             (re)draw the PNG plots of a finished run in DIR\n"
-    "  slamsph --version | --help\n";
+using namespace slamsph;
 
-double parse_number(const std::string& flag, const char* s) {
-  char* end = nullptr;
-  const double v = std::strtod(s, &end);
-  if (end == s || *end != '\0')
-    throw slamsph::InputError("command line: " + flag + ": expected a number, got '" + s + "'");
-  return v;
+// What the command line asked for, filled by CLI11's callbacks.
+struct Request {
+  std::string case_path;
+  std::string out_dir;
+  RunOptions run;
+  std::optional<double> dx;
+  std::vector<std::string> sets;
+  std::string help_topic;
+  bool no_output = false;
+};
+
+// "--threads" default text for the help: where the number comes from and its value now.
+std::string thread_default_text() {
+  const int env = Executor::env_threads();
+  if (env > 0) return std::to_string(env) + " (from OMP_NUM_THREADS)";
+  const int aff = Executor::affinity_threads();
+  if (aff > 0) return std::to_string(aff) + " (CPUs this process may run on)";
+  return std::to_string(Executor::hardware_threads()) + " (hardware threads)";
 }
 
-int run_command(int argc, char** argv) {
-  using namespace slamsph;
-  if (argc < 3) throw InputError(std::string("missing CASE.toml\n") + kUsage);
-  const std::string cmd = argv[1];
-  const std::string path = argv[2];
-  RunOptions opt;
-  for (int k = 3; k < argc; ++k) {
-    const std::string a = argv[k];
-    auto value = [&]() -> const char* {
-      if (k + 1 >= argc) throw InputError("command line: " + a + ": expected a value");
-      return argv[++k];
-    };
-    if (a == "--out")
-      opt.out_dir = value();
-    else if (a == "--threads") {
-      const double n = parse_number(a, value());
-      if (!(n >= 1 && n <= 1024) || n != std::floor(n))
-        throw InputError("command line: --threads: expected a whole number from 1 to 1024");
-      opt.threads = static_cast<int>(n);
-    } else if (a == "--end-time") {
-      opt.end_time = parse_number(a, value());
-      if (!(*opt.end_time > 0.0) || !std::isfinite(*opt.end_time))
-        throw InputError("command line: --end-time: expected a finite time > 0 s");
-    } else if (a == "--max-steps") {
-      const double n = parse_number(a, value());
-      if (!(n >= 0 && n <= 1e15) || n != std::floor(n))
-        throw InputError("command line: --max-steps: expected a whole number >= 0");
-      opt.max_steps = static_cast<long>(n);
-    } else if (a == "--dx") {
-      opt.dx = parse_number(a, value());
-      if (!(*opt.dx > 0.0) || !std::isfinite(*opt.dx))
-        throw InputError("command line: --dx: expected a positive length in m");
-    } else if (a == "--quiet")
-      opt.quiet = true;
-    else if (a == "--no-output")
-      opt.write_output = false;
-    else
-      throw InputError("command line: unknown option '" + a + "'\n" + kUsage);
-  }
-  if (cmd == "plot") return plot_command(path);
-  CaseConfig cfg = load_case(path);
-  if (opt.dx) rescale_resolution(cfg, *opt.dx);
+const CLI::Validator kPositiveFinite(
+    [](std::string& s) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(s, v) || !(v > 0.0) || !std::isfinite(v))
+        return "expected a finite number > 0, got '" + s + "'";
+      return "";
+    },
+    "NUMBER > 0");
+
+// The options `run` and `check` share: the case file and what changes it.
+void add_case_options(CLI::App& sub, Request& req) {
+  sub.add_option("case", req.case_path, "The case file (TOML; docs/case_format.md)")
+      ->required()
+      ->type_name("CASE.toml");
+  sub.add_option("--set", req.sets,
+                 "Override one case key, validated like the file and recorded in "
+                 "case.resolved.toml, e.g. --set numerics.end_time=0.02 or "
+                 "--set body[0].velocity=[0,-3] (repeatable)")
+      ->type_name("KEY=VALUE")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false);
+  sub.add_option("--dx", req.dx,
+                 "Fluid particle spacing in m; bodies keep their spacing relative to the "
+                 "water (default: numerics.dx of the case)")
+      ->check(kPositiveFinite)
+      ->type_name("DX");
+}
+
+int run_or_check(const std::string& cmd, Request& req) {
+  CaseConfig cfg = load_case(req.case_path, req.sets);
+  if (req.dx) rescale_resolution(cfg, *req.dx);
+  RunOptions& opt = req.run;
+  opt.write_output = !req.no_output;
   // Set-up warnings go out after the particles are built and before any time step.
-  auto warn = [](const Simulation& sim) {
+  auto warn = [&](const Simulation& sim) {
+    if (opt.quiet) return;
     for (const std::string& w : sim.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   };
   if (cmd == "check") {
@@ -86,35 +89,126 @@ int run_command(int argc, char** argv) {
     std::printf(")\n");
     return 0;
   }
-  if (opt.out_dir.empty()) opt.out_dir = "results";
+  opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
   Simulation sim(std::move(cfg), opt);
   warn(sim);
   const int code = sim.run();
   if (code == 0 && opt.write_output && !sim.config().output.plot.empty()) {
-    const int pc = plot_command(opt.out_dir);
+    const int pc = plot_command(opt.out_dir, opt.quiet);
     if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
   }
+  if (opt.write_output && !opt.quiet) std::fprintf(stderr, "results in %s\n", opt.out_dir.c_str());
   return code;
+}
+
+int dispatch(int argc, char** argv) {
+  Request req;
+  CLI::App app("slamsph " SLAMSPH_VERSION
+               ": SPH solver for water entry and slamming (Wang, Yang & Yang, Appl. Sci. "
+               "2023)",
+               "slamsph");
+  app.set_version_flag("--version", "slamsph " SLAMSPH_VERSION);
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success, 1 internal error, 2 bad input (the message names file, line "
+      "and key; nothing is written), 3 the run diverged (outputs so far are kept).\n"
+      "'slamsph help COMMAND' or 'slamsph COMMAND --help' lists a command's options.");
+
+  CLI::App* run = app.add_subcommand("run", "Run a case and write its results");
+  add_case_options(*run, req);
+  run->add_option("-o,--out", req.out_dir, "Output folder (default: results/<case name>)")
+      ->type_name("DIR");
+  run->add_option("-t,--threads", req.run.threads,
+                  "Threads (default: OMP_NUM_THREADS, else the CPUs in this process's "
+                  "affinity mask, else the hardware threads; here " +
+                      thread_default_text() + ")")
+      ->check(CLI::Range(1, Executor::kMaxThreads))
+      ->type_name("N");
+  run->add_option("--end-time", req.run.end_time,
+                  "Simulated end time in s (default: numerics.end_time of the case)")
+      ->check(kPositiveFinite)
+      ->type_name("T");
+  run->add_option("--max-steps", req.run.max_steps,
+                  "Stop after N fluid steps; the run is then reported as stopped, not "
+                  "completed (default: no limit)")
+      ->check(CLI::Range(0L, 1000000000000000L))
+      ->type_name("N");
+  run->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
+  run->add_flag("--no-output", req.no_output,
+                "Write no files (benchmarks); default: write everything");
+
+  CLI::App* check = app.add_subcommand(
+      "check", "Validate a case, build its particles and print their counts; no time step");
+  add_case_options(*check, req);
+
+  CLI::App* plot = app.add_subcommand("plot", "Redraw the PNG plots of a run from its folder");
+  plot->add_option("dir", req.out_dir, "A results folder (holding case.resolved.toml)")
+      ->required()
+      ->type_name("DIR");
+
+  CLI::App* help = app.add_subcommand("help", "Show the options of a command");
+  help->add_option("command", req.help_topic, "run, check or plot")->type_name("COMMAND");
+
+  // A first word that is neither an option nor a command is a mistyped command (CLI11 would
+  // call it a missing subcommand).
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    if (first != "run" && first != "check" && first != "plot" && first != "help") {
+      std::fprintf(stderr,
+                   "error: command line: unknown command '%s'; expected run, check, plot or help\n",
+                   argv[1]);
+      return 2;
+    }
+  }
+  if (argc < 2) {
+    std::cerr << app.help();
+    std::fprintf(stderr, "error: command line: no command given\n");
+    return 2;
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // One line, the CLI11 message, and where to look; bad command lines are bad input.
+    std::string what = e.what();
+    if (what.empty()) what = e.get_name();
+    const CLI::App* sub = nullptr;
+    for (const CLI::App* s : {run, check, plot, help})
+      if (s->parsed()) sub = s;
+    std::fprintf(stderr, "error: command line: %s (see 'slamsph %s--help')\n", what.c_str(),
+                 sub ? (sub->get_name() + " ").c_str() : "");
+    return 2;
+  }
+
+  if (help->parsed()) {
+    if (req.help_topic.empty()) {
+      // app.help() would describe the selected subcommand (help itself).
+      std::cout << app.get_formatter()->make_help(&app, "slamsph", CLI::AppFormatMode::Normal);
+      return 0;
+    }
+    for (CLI::App* s : {run, check, plot})
+      if (s->get_name() == req.help_topic) {
+        std::cout << s->help("slamsph");
+        return 0;
+      }
+    std::fprintf(stderr, "error: command line: no command '%s'; expected run, check or plot\n",
+                 req.help_topic.c_str());
+    return 2;
+  }
+  if (plot->parsed()) return plot_command(req.out_dir);
+  return run_or_check(run->parsed() ? "run" : "check", req);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
-    std::fputs(kUsage, argc < 2 ? stderr : stdout);
-    return argc < 2 ? 2 : 0;
-  }
-  if (!std::strcmp(argv[1], "--version")) {
-    std::printf("slamsph %s\n", SLAMSPH_VERSION);
-    return 0;
-  }
-  const std::string cmd = argv[1];
-  if (cmd != "run" && cmd != "check" && cmd != "plot") {
-    std::fprintf(stderr, "error: unknown command '%s'\n%s", argv[1], kUsage);
-    return 2;
-  }
   try {
-    return run_command(argc, argv);
+    return dispatch(argc, argv);
   } catch (const slamsph::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;

@@ -5,6 +5,7 @@
 namespace slamsph {
 
 // Returns 0 on success, 2 if DIR is not a results folder, else the plot_results code.
-int plot_command(const std::string& out_dir);
+// `quiet` prints only errors.
+int plot_command(const std::string& out_dir, bool quiet = false);
 
 }  // namespace slamsph

@@ -44,7 +44,9 @@ void Recorder::start() {
     const std::string& dir = opt_.out_dir;
     std::filesystem::create_directories(dir);
     std::ofstream(dir + "/case.resolved.toml") << resolved_case_toml(cfg_);
-    if (cfg_.output.vtk) vtk_ = std::make_unique<VtkSeries>(dir);
+    if (cfg_.output.vtk)
+      vtk_ = std::make_unique<VtkSeries>(dir, VtkOptions{cfg_.output.vtk_precision == "float64",
+                                                         cfg_.output.vtk_compression == "zlib"});
     if (!bodies.empty()) {
       std::vector<std::string> h{"time [s]"};
       for (const SolidBody& b : bodies) {
@@ -123,17 +125,21 @@ void Recorder::write_frame() {
     ff.push_back({"density", "kg/m^3", 1, fluid.rho, {}});
     std::vector<double> id(fluid.size()), set(fluid.size(), 0.0);
     for (std::size_t i = 0; i < fluid.size(); ++i) id[i] = static_cast<double>(fluid.id[i]);
-    ff.push_back({"id", "-", 1, id, {}});
-    ff.push_back({"set", "-", 1, set, {}});
+    ff.push_back({"id", "-", 1, id, {}, true});
+    ff.push_back({"set", "-", 1, set, {}, true});
     std::vector<double> crossed(fluid.crossed.begin(), fluid.crossed.end());
-    ff.push_back({"crossed_solid", "-", 1, crossed, {}});  // leak counter flag (1 = crossed)
+    ff.push_back({"crossed_solid", "-", 1, crossed, {}, true});  // leak flag (1 = crossed)
     vtk_->write(time, "fluid", fluid.x, ff);
   }
   for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
     const SolidBody& body = sys.bodies[b];
     std::vector<PointField> bf;
-    for (SolidField& sf : solid_output_fields(body))
-      bf.push_back({sf.name, sf.unit, sf.components, std::move(sf.values), {}});
+    for (SolidField& sf : solid_output_fields(body)) {
+      std::vector<std::string> names;
+      if (sf.components == 4) names = {"xx", "xy", "yx", "yy"};
+      if (sf.components == 6) names = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};
+      bf.push_back({sf.name, sf.unit, sf.components, std::move(sf.values), names});
+    }
     std::vector<double> pv(body.size()), id(body.size()), set(body.size(), double(b + 1));
     std::vector<Vec2> force(body.size());
     for (std::size_t i = 0; i < body.size(); ++i) {
@@ -143,8 +149,8 @@ void Recorder::write_frame() {
     }
     bf.push_back({"contact_pressure", "Pa", 1, pv, {}});
     bf.push_back({"fluid_force", "N/m", 2, vec_values(force), {}});
-    bf.push_back({"id", "-", 1, id, {}});
-    bf.push_back({"set", "-", 1, set, {}});
+    bf.push_back({"id", "-", 1, id, {}, true});
+    bf.push_back({"set", "-", 1, set, {}, true});
     vtk_->write(time, body.name, body.x, bf);
   }
   vtk_->end_frame();

@@ -7,7 +7,7 @@ namespace slamsph {
 
 struct RunOptions {
   std::string out_dir = "results";
-  int threads = 0;                 // 0 = all hardware threads
+  int threads = 0;                 // 0 = Executor::default_threads()
   std::optional<double> end_time;  // overrides numerics.end_time
   std::optional<long> max_steps;   // stop after this many fluid steps
   std::optional<double> dx;        // fluid spacing override (bodies scale with it)

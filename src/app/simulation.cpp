@@ -16,7 +16,7 @@ namespace slamsph {
 Simulation::Simulation(CaseConfig config, const RunOptions& options)
     : cfg_(std::move(config)),
       opt_(options),
-      exec_(options.threads > 0 ? options.threads : Executor::hardware_threads()) {
+      exec_(options.threads > 0 ? options.threads : Executor::default_threads()) {
   if (opt_.end_time) cfg_.numerics.end_time = *opt_.end_time;
   warnings_ = setup_warnings(cfg_);
   BuiltCase built = build_case(cfg_);

@@ -59,7 +59,17 @@ class Executor {
     return m;
   }
 
+  static constexpr int kMaxThreads = 1024;
+  // Threads the hardware offers (std::thread::hardware_concurrency, at least 1).
   static int hardware_threads();
+  // CPUs in this process's affinity mask (what taskset or a batch scheduler allows), 0 if
+  // unknown.
+  static int affinity_threads();
+  // The first entry of OMP_NUM_THREADS if it is a whole number in [1, kMaxThreads], else 0.
+  static int env_threads();
+  // The default thread count of a run: OMP_NUM_THREADS, else the affinity mask, else the
+  // hardware.
+  static int default_threads();
 
  private:
   int threads_ = 1;

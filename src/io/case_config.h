@@ -108,14 +108,17 @@ struct OutputConfig {
   double interval = 0.0;        // VTK interval [s] (default end_time/50)
   double probe_interval = 0.0;  // probes.csv interval [s] (0 = every fluid step)
   bool vtk = true;
-  std::string plot;  // "" or "cylinder_entry", "dam_break", "plate", "gate"
+  std::string vtk_precision = "float32";  // real fields in the .vtp files: "float32", "float64"
+  std::string vtk_compression = "none";   // "none" or "zlib"
+  std::string plot;                       // "" or "cylinder_entry", "dam_break", "plate", "gate"
   std::vector<ProbeConfig> probes;
 };
 
 struct CaseConfig {
   int schema_version = 1;
   std::string name;
-  std::string source_path;  // the file it came from (for messages)
+  std::string source_path;             // the file it came from (for messages)
+  std::vector<std::string> overrides;  // command-line "KEY=VALUE" applied to it (--set)
   NumericsConfig numerics;
   FluidConfig fluid;
   std::vector<MaterialConfig> materials;

@@ -418,11 +418,14 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
   o.interval = c.numerics.end_time / 50.0;
   auto r = root.table("output", "an [output] table");
   if (!r) return o;
-  r->allow({"interval", "probe_interval", "vtk", "plot", "probe"});
+  r->allow(
+      {"interval", "probe_interval", "vtk", "vtk_precision", "vtk_compression", "plot", "probe"});
   o.interval = num(*r, "interval", positive("a positive output interval in s"), o.interval);
   o.probe_interval =
       num(*r, "probe_interval", non_negative("a probe interval >= 0 in s (0 = every step)"), 0.0);
   o.vtk = r->boolean("vtk").value_or(true);
+  o.vtk_precision = r->choice("vtk_precision", {"float32", "float64"}).value_or("float32");
+  o.vtk_compression = r->choice("vtk_compression", {"none", "zlib"}).value_or("none");
   o.plot = r->choice("plot", kPlots).value_or("");
   const auto probes = r->table_array("probe", "[[output.probe]] tables with name and kind");
   std::set<std::string> names;
@@ -539,7 +542,8 @@ CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
 
 }  // namespace
 
-CaseConfig parse_case_string(const std::string& text, const std::string& source_name) {
+CaseConfig parse_case_string(const std::string& text, const std::string& source_name,
+                             const std::vector<std::string>& overrides) {
   toml::table tbl;
   try {
     tbl = toml::parse(text, source_name);
@@ -548,15 +552,18 @@ CaseConfig parse_case_string(const std::string& text, const std::string& source_
     fail(source_name, static_cast<int>(b.line), "(toml syntax)",
          std::string(e.description()) + " (column " + std::to_string(b.column) + ")", "valid TOML");
   }
-  return parse_root(tbl, source_name);
+  case_detail::apply_overrides(tbl, overrides);
+  CaseConfig c = parse_root(tbl, source_name);
+  c.overrides = overrides;
+  return c;
 }
 
-CaseConfig load_case(const std::string& path) {
+CaseConfig load_case(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the case file; expected a readable TOML file");
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_case_string(ss.str(), path);
+  return parse_case_string(ss.str(), path, overrides);
 }
 
 }  // namespace slamsph

@@ -50,10 +50,17 @@ int line_of(const toml::node& n) {
   return static_cast<int>(n.source().begin.line);
 }
 
+std::string origin_of(const toml::source_region& r, const std::string& file) {
+  if (r.path && r.path->rfind("--set ", 0) == 0) return *r.path;
+  return file;
+}
+
 void fail(const std::string& source, int line, const std::string& path, const std::string& what,
           const std::string& expected, const std::string& got) {
-  std::string msg = source + ":" + std::to_string(line > 0 ? line : 1) + ": " + path + ": " + what +
-                    "; expected " + expected;
+  const bool override = source.rfind("--set ", 0) == 0;
+  std::string msg = source;
+  if (!override) msg.append(":").append(std::to_string(line > 0 ? line : 1));
+  msg.append(": ").append(path).append(": ").append(what).append("; expected ").append(expected);
   if (!got.empty()) msg += ", got " + got;
   throw InputError(msg);
 }
@@ -98,7 +105,7 @@ std::string describe(const toml::node& n) {
 }
 
 Reader::Reader(const std::string& source, const toml::table& t, std::string path, int line)
-    : source_(&source), table_(&t), path_(std::move(path)), line_(line) {
+    : source_(origin_of(t.source(), source)), table_(&t), path_(std::move(path)), line_(line) {
   const int own = line_of(t);
   if (own > 0) line_ = own;
 }
@@ -134,7 +141,8 @@ void Reader::allow(const std::vector<std::string>& allowed, const std::string& c
   const std::string near = nearest(key, allowed);
   if (!near.empty()) what += " (did you mean '" + near + "'?)";
   const int l = static_cast<int>(worst->source().begin.line);
-  fail(*source_, l > 0 ? l : line_, key_path(key), what, "one of " + join(allowed));
+  fail(origin_of(worst->source(), source_), l > 0 ? l : line_, key_path(key), what,
+       "one of " + join(allowed));
 }
 
 void Reader::forbid(std::string_view key, const std::string& when) const {
@@ -149,10 +157,11 @@ double Reader::as_number(const toml::node& n, const std::string& path,
   else if (auto f = n.as_floating_point())
     v = f->get();
   else
-    fail(*source_, line_of(n) > 0 ? line_of(n) : line_, path, "wrong type", expected, type_name(n));
+    fail(origin_of(n.source(), source_), line_of(n) > 0 ? line_of(n) : line_, path, "wrong type",
+         expected, type_name(n));
   if (!std::isfinite(v))
-    fail(*source_, line_of(n) > 0 ? line_of(n) : line_, path, "must be finite", expected,
-         describe(n));
+    fail(origin_of(n.source(), source_), line_of(n) > 0 ? line_of(n) : line_, path,
+         "must be finite", expected, describe(n));
   return v;
 }
 
@@ -211,7 +220,7 @@ std::optional<Reader> Reader::table(std::string_view key, const std::string& exp
   if (!n) return std::nullopt;
   const toml::table* t = n->as_table();
   if (!t) bad(key, "wrong type", expected, type_name(*n));
-  return Reader(*source_, *t, key_path(key), line(key));
+  return Reader(source_, *t, key_path(key), line(key));
 }
 
 std::vector<Reader> Reader::table_array(std::string_view key, const std::string& expected) const {
@@ -225,9 +234,9 @@ std::vector<Reader> Reader::table_array(std::string_view key, const std::string&
     const std::string p = key_path(key) + "[" + std::to_string(i) + "]";
     const toml::table* t = e.as_table();
     if (!t)
-      fail(*source_, line_of(e) > 0 ? line_of(e) : line(key), p, "wrong type", expected,
-           type_name(e));
-    out.emplace_back(*source_, *t, p, line(key));
+      fail(origin_of(e.source(), source_), line_of(e) > 0 ? line_of(e) : line(key), p, "wrong type",
+           expected, type_name(e));
+    out.emplace_back(source_, *t, p, line(key));
   }
   return out;
 }
@@ -246,7 +255,7 @@ std::optional<std::vector<std::vector<double>>> Reader::rows(std::string_view ke
     const int l = line_of(e) > 0 ? line_of(e) : line(key);
     const toml::array* r = e.as_array();
     if (!r || r->size() != width)
-      fail(*source_, l, p, r ? "wrong length" : "wrong type", expected,
+      fail(origin_of(e.source(), source_), l, p, r ? "wrong length" : "wrong type", expected,
            r ? "an array of " + std::to_string(r->size()) : type_name(e));
     std::vector<double> row;
     for (std::size_t j = 0; j < width; ++j)
@@ -267,7 +276,7 @@ std::optional<std::vector<long>> Reader::int_list(std::string_view key,
     const toml::node& e = *a->get(i);
     auto v = e.as_integer();
     if (!v)
-      fail(*source_, line_of(e) > 0 ? line_of(e) : line(key),
+      fail(origin_of(e.source(), source_), line_of(e) > 0 ? line_of(e) : line(key),
            key_path(key) + "[" + std::to_string(i) + "]", "wrong type", expected, type_name(e));
     out.push_back(static_cast<long>(v->get()));
   }
@@ -275,12 +284,14 @@ std::optional<std::vector<long>> Reader::int_list(std::string_view key,
 }
 
 void Reader::missing(std::string_view key, const std::string& expected) const {
-  fail(*source_, line_, key_path(key), "missing required key", expected);
+  fail(source_, line_, key_path(key), "missing required key", expected);
 }
 
 void Reader::bad(std::string_view key, const std::string& what, const std::string& expected,
                  const std::string& got) const {
-  fail(*source_, line(key), key_path(key), what, expected, got);
+  const toml::node* n = node(key);
+  fail(n ? origin_of(n->source(), source_) : source_, line(key), key_path(key), what, expected,
+       got);
 }
 
 void Reader::check(bool ok, std::string_view key, const std::string& what,

@@ -24,7 +24,15 @@ std::string nearest(std::string_view word, const std::vector<std::string>& candi
 std::string format_double(double v);
 // Source line of a node (0 if unknown).
 int line_of(const toml::node& n);
+// Where a value came from: "--set KEY=VALUE" for a command-line override (case_overrides.cpp),
+// else `file` (the case file's name).
+std::string origin_of(const toml::source_region& r, const std::string& file);
+// Applies `--set KEY=VALUE` overrides to the parsed table (before validation). Throws
+// InputError naming the override for a malformed one or a path that does not exist.
+void apply_overrides(toml::table& root, const std::vector<std::string>& sets);
 
+// Throws the InputError "<source>:<line>: <path>: <what>; expected <expected>[, got <got>]";
+// for a --set override the line is left out ("--set KEY=VALUE: <path>: ...").
 [[noreturn]] void fail(const std::string& source, int line, const std::string& path,
                        const std::string& what, const std::string& expected,
                        const std::string& got = "");
@@ -38,7 +46,7 @@ class Reader {
 
   const std::string& path() const { return path_; }
   int line() const { return line_; }
-  const std::string& source() const { return *source_; }
+  const std::string& source() const { return source_; }
   std::string key_path(std::string_view key) const;
   int line(std::string_view key) const;  // the key's value line, else the table's
   bool has(std::string_view key) const { return table_->contains(key); }
@@ -88,7 +96,7 @@ class Reader {
  private:
   double as_number(const toml::node& n, const std::string& path, const std::string& expected) const;
 
-  const std::string* source_;
+  std::string source_;
   const toml::table* table_;
   std::string path_;
   int line_;

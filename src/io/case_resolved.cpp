@@ -60,6 +60,13 @@ void box(std::ostream& o, const Box& bx) {
 std::string resolved_case_toml(const CaseConfig& c) {
   std::ostringstream o;
   o << "# Resolved case: every default filled in (docs/case_format.md). SI units.\n";
+  for (const std::string& s : c.overrides) {
+    // A comment line must not be ended early by a newline inside the override.
+    std::string one = s;
+    for (char& ch : one)
+      if (ch == '\n' || ch == '\r') ch = ' ';
+    o << "# overridden on the command line: --set " << one << "\n";
+  }
   o << "schema_version = " << c.schema_version << "\n";
   o << "name = " << q(c.name) << "\n\n";
 
@@ -177,6 +184,8 @@ std::string resolved_case_toml(const CaseConfig& c) {
   o << "interval = " << d(out.interval) << "  # [s]\n";
   o << "probe_interval = " << d(out.probe_interval) << "  # [s]\n";
   o << "vtk = " << b(out.vtk) << "\n";
+  o << "vtk_precision = " << q(out.vtk_precision) << "\n";
+  o << "vtk_compression = " << q(out.vtk_compression) << "\n";
   o << "plot = " << q(out.plot) << "\n";
   for (const auto& p : out.probes) {
     o << "\n[[output.probe]]\n";

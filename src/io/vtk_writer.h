@@ -1,24 +1,30 @@
-// Particle output for ParaView: one VTK XML PolyData file (.vtp, ASCII) per particle set
-// and frame, plus a ParaView collection (fields.pvd) that indexes them by time and part.
+// Particle output for ParaView: one VTK XML PolyData file (.vtp) per particle set and frame,
+// plus a ParaView collection (fields.pvd) that indexes them by time and part.
 //
 // Layout: <out_dir>/vtk/<set>_<frame:05>.vtp and <out_dir>/fields.pvd. fields.pvd is
 // rewritten complete (via a temporary file and rename) at every end_frame(), so a run
-// that stops early still leaves a readable time series.
+// that stops early still leaves a readable time series that lists only finished files.
 //
-// File conventions (kept so that ParaView reads the files without plugins):
+// File conventions (kept so that ParaView 5.x reads the files without plugins):
+//  - Data are "appended" raw binary (no base64), little-endian, with a UInt64 size header
+//    per array; with zlib compression (VtkOptions::zlib) each array is split into 64 KiB
+//    blocks compressed separately (vtkZLibDataCompressor's layout).
+//  - Real fields and the points are Float32 by default (VtkOptions::float64 for Float64);
+//    integer fields (PointField::integer: ids, set and flag numbers) are Int32 when every
+//    value fits, else Int64; the time is always Float64.
 //  - Points are 3D with z = 0; each particle is a VTK_VERTEX cell, so ParaView shows
 //    points without a Glyph filter.
 //  - Array names stay clean ("pressure"); the unit is an extra attribute unit="Pa" on the
 //    <DataArray> element (readers ignore unknown attributes) and is repeated in an XML
 //    comment at the top of the file.
-//  - 2-component fields (vectors) are written with 3 components (z = 0) so that ParaView
-//    treats them as vectors (Glyph, Stream Tracer). Other component counts are written
-//    as given: 4 = full 2x2 tensor row-major (xx, xy, yx, yy), 3 = symmetric tensor
-//    (xx, yy, xy). Component names, when given, become ComponentName<i> attributes.
+//  - Component counts: 1 scalar; 2 vector, written with 3 components (z = 0) so that
+//    ParaView treats it as a vector; 4 a full 2x2 tensor row-major (xx, xy, yx, yy);
+//    6 a symmetric tensor in VTK's order (XX, YY, ZZ, XY, YZ, XZ), which ParaView shows as
+//    a tensor (eigenvalues, Tensor Glyph). Component names, when given, become
+//    ComponentName<i> attributes.
 //  - The simulated time is stored as FieldData "TimeValue" (ParaView's convention).
-//  - Numbers are written in shortest round-trip form (std::to_chars), so values read back
-//    exactly. Non-finite values are written as "nan"/"inf" (ParaView's ASCII reader may
-//    reject them; a diverged run's last frame is for inspection only).
+//  - Non-finite values are written as they are (NaN/inf bit patterns); a diverged run's
+//    last frame is for inspection only.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -31,15 +37,21 @@ namespace slamsph {
 struct PointField {
   std::string name;                          // array name, no unit: "pressure"
   std::string unit;                          // SI unit text: "Pa", "m/s", "-" for dimensionless
-  int components = 1;                        // 1 scalar, 2 vector, 3 symmetric tensor, 4 tensor
+  int components = 1;                        // 1 scalar, 2 vector, 4 tensor, 6 symmetric tensor
   std::vector<double> values;                // size n * components, particle-major
-  std::vector<std::string> component_names;  // optional, size components: {"xx", "yy", "xy"}
+  std::vector<std::string> component_names;  // optional, size components
+  bool integer = false;                      // whole numbers (ids, flags): written as integers
+};
+
+struct VtkOptions {
+  bool float64 = false;  // real fields and points as Float64 (default Float32)
+  bool zlib = false;     // zlib-compressed appended data
 };
 
 class VtkSeries {
  public:
   // Creates <out_dir>/vtk. Throws std::runtime_error if it cannot.
-  explicit VtkSeries(std::string out_dir);
+  explicit VtkSeries(std::string out_dir, VtkOptions options = {});
   // Closes an unfinished frame (end_frame) so the .pvd lists everything written.
   ~VtkSeries();
   VtkSeries(const VtkSeries&) = delete;
@@ -47,8 +59,8 @@ class VtkSeries {
 
   // Writes one particle set of the current frame. A set name may appear once per frame;
   // its `part` index in the .pvd is the order of first appearance over the run. Throws
-  // std::invalid_argument for inconsistent sizes or a bad set name, std::runtime_error on
-  // I/O failure.
+  // std::invalid_argument for inconsistent sizes, a bad set name or a non-integer value in
+  // an integer field, std::system_error (with the path and the OS reason) on I/O failure.
   void write(double time, const std::string& set_name, const std::vector<Vec2>& x,
              const std::vector<PointField>& fields);
   // Finishes the frame: rewrites fields.pvd and advances the frame counter. A frame
@@ -70,6 +82,7 @@ class VtkSeries {
   int part_of(const std::string& set_name);
 
   std::string out_dir_;
+  VtkOptions options_;
   std::string pvd_path_;
   int frame_ = 0;
   std::vector<std::string> parts_;  // set names in order of first appearance

@@ -327,7 +327,12 @@ TEST_F(Outputs, PvdIsValidXmlListingExactlyTheVtpFilesThatExist) {
     // Each listed file exists, is well-formed and holds the part's particles.
     const fs::path vtp = out() / file;
     ASSERT_TRUE(fs::exists(vtp)) << vtp;
-    const std::vector<XmlTag> vt = xml_tags(slurp(vtp), file);
+    // The XML header up to the appended binary data; the file must end the data properly.
+    const std::string text = slurp(vtp);
+    const std::size_t app = text.find("<AppendedData encoding=\"raw\">");
+    ASSERT_NE(app, std::string::npos) << file;
+    EXPECT_TRUE(text.ends_with("\n  </AppendedData>\n</VTKFile>\n")) << file;
+    const std::vector<XmlTag> vt = xml_tags(text.substr(0, app) + "</VTKFile>\n", file);
     const auto piece =
         std::find_if(vt.begin(), vt.end(), [](const XmlTag& x) { return x.name == "Piece"; });
     ASSERT_NE(piece, vt.end()) << file;

@@ -259,17 +259,23 @@ TEST_F(CliTest, BadCommandLinesExitTwoAndWriteNothing) {
   };
   const std::vector<Bad> bad{
       {"frobnicate good.toml", "unknown command 'frobnicate'"},
-      {"", "usage"},
-      {"run", "missing CASE.toml"},
+      {"", "no command given"},
+      {"run", "case is required"},
       {"run good.toml --out out --threads 0", "--threads"},
       {"run good.toml --out out --threads -2", "--threads"},
       {"run good.toml --out out --threads 1.5", "--threads"},
       {"run good.toml --out out --threads two", "--threads"},
-      {"run good.toml --out out --threads", "--threads: expected a value"},
+      {"run good.toml --out out --threads", "--threads: 1 required N"},
+      {"run good.toml --out out --threads=0", "--threads"},
+      {"run good.toml --out out --dx=-1", "--dx"},
+      {"run good.toml --out out --set numerics.dx", "--set numerics.dx: no '='"},
+      {"run good.toml --out out --set body[3].dx=1", "no body[3] in the case (it has 1)"},
+      {"check good.toml other.toml", "other.toml"},
+      {"help frobnicate", "no command 'frobnicate'"},
       {"run good.toml --out out --end-time -1", "--end-time"},
       {"run good.toml --out out --end-time 0", "--end-time"},
       {"run good.toml --out out --max-steps -1", "--max-steps"},
-      {"run good.toml --out out --bogus", "unknown option '--bogus'"},
+      {"run good.toml --out out --bogus", "not expected: --bogus"},
   };
   for (const Bad& b : bad) {
     SCOPED_TRACE(b.args);
@@ -281,6 +287,116 @@ TEST_F(CliTest, BadCommandLinesExitTwoAndWriteNothing) {
   }
   EXPECT_EQ(run("--version").code, 0);
   EXPECT_EQ(run("--help").code, 0);
+}
+
+// Issue 12: `slamsph run --help` failed with "cannot open the case file" and no command
+// described its options. Each command's --help (and `slamsph help COMMAND`) exits 0 and lists
+// every option with its default.
+TEST_F(CliTest, EveryCommandHasHelpListingItsOptionsAndDefaults) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> expected{
+      {"run",
+       {"--out", "default: results/<case name>", "--threads", "OMP_NUM_THREADS", "--end-time",
+        "--max-steps", "--dx", "--set", "--quiet", "--no-output", "Exit codes"}},
+      {"check", {"--set", "--dx", "CASE.toml"}},
+      {"plot", {"DIR"}},
+  };
+  for (const auto& [cmd, words] : expected) {
+    SCOPED_TRACE(cmd);
+    for (const std::string& args : {cmd + " --help", "help " + cmd, cmd + " -h"}) {
+      const CliResult r = run(args);
+      EXPECT_EQ(r.code, 0) << args << ": " << r.err;
+      EXPECT_NE(r.out.find("Usage: slamsph " + cmd), std::string::npos) << args << "\n" << r.out;
+      for (const std::string& w : words)
+        EXPECT_NE(r.out.find(w), std::string::npos) << args << ": no '" << w << "' in\n" << r.out;
+    }
+  }
+  const CliResult top = run("help");
+  EXPECT_EQ(top.code, 0);
+  for (const char* w : {"run", "check", "plot", "--version"})
+    EXPECT_NE(top.out.find(w), std::string::npos) << top.out;
+  const CliResult v = run("--version");
+  EXPECT_EQ(v.out.rfind("slamsph ", 0), 0u) << v.out;
+}
+
+// Issue 12: options had to follow the case file and --threads=2 was rejected. Options may
+// come anywhere, in either spelling.
+TEST_F(CliTest, OptionsInAnyPositionAndEitherSpelling) {
+  write_case("good.toml", kGood);
+  for (const std::string& args :
+       {std::string("run --threads=1 --max-steps=2 --out=o1 --quiet good.toml"),
+        std::string("run --out o2 good.toml --threads 1 -q --max-steps 2"),
+        std::string("run -t1 -o o3 --max-steps 2 --quiet good.toml")}) {
+    SCOPED_TRACE(args);
+    const CliResult r = run(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "--quiet prints nothing but errors";
+    EXPECT_EQ(r.out, "");
+  }
+  for (const char* d : {"o1", "o2", "o3"})
+    EXPECT_TRUE(fs::exists(work() / d / "summary.json")) << d;
+}
+
+// --set KEY=VALUE overrides any key, goes through the same validation as the file (an error
+// names the override and the key) and is recorded in case.resolved.toml.
+TEST_F(CliTest, SetOverridesAreValidatedLikeTheFileAndRecorded) {
+  write_case("good.toml", kGood);
+  const CliResult c = run("check good.toml --set numerics.dx=0.025");
+  EXPECT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("400 fluid particles"), std::string::npos) << c.out;  // 4x the 100
+  struct Bad {
+    const char* set;
+    const char* where;  // the override and the key path, then what is wrong
+  };
+  const std::vector<Bad> bad{
+      {"numerics.dx=abc", "--set numerics.dx=abc: numerics.dx: wrong type"},
+      {"numerics.dx=-1", "--set numerics.dx=-1: numerics.dx: must be > 0"},
+      {"numerics.dxx=1", "--set numerics.dxx=1: numerics.dxx: unknown key (did you mean 'dx'?)"},
+      {"body[0].kind=rigid_fre",
+       "--set body[0].kind=rigid_fre: body[0].kind: unknown value (did you mean 'rigid_free'?)"},
+      {"fluid.block[0].max=[1.5,0.5]", "--set fluid.block[0].max=[1.5,0.5]: fluid.block[0].max"},
+      {"name.x=1", "name is not a table"},
+  };
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.set);
+    const CliResult r = run(std::string("run good.toml --out out --set ") + b.set);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(b.where), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(work() / "out"));
+  }
+  const CliResult r =
+      run("run good.toml --out out --max-steps 1 --quiet --set numerics.end_time=0.02 "
+          "--set \"name=renamed case\"");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string resolved = slurp(work() / "out" / "case.resolved.toml");
+  EXPECT_NE(resolved.find("end_time = 0.02"), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("name = \"renamed case\""), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("# overridden on the command line: --set numerics.end_time=0.02"),
+            std::string::npos)
+      << resolved;
+}
+
+// Issue 12: the thread count ignored OMP_NUM_THREADS and the CPU affinity. Default: the
+// environment, else the affinity mask (taskset), else the hardware; --threads wins.
+TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
+  write_case("good.toml", kGood);
+  auto threads_of = [&](const std::string& prefix, const std::string& extra) {
+    fs::remove_all(work() / "out");
+    const std::string cmd = "run good.toml --out out --max-steps 1 --quiet " + extra;
+    const fs::path out = root_ / "capture" / "stdout.txt";
+    const fs::path err = root_ / "capture" / "stderr.txt";
+    const std::string sh = "cd '" + work().string() + "' && " + prefix + " '" + SLAMSPH_BINARY +
+                           "' " + cmd + " >'" + out.string() + "' 2>'" + err.string() + "'";
+    EXPECT_EQ(std::system(sh.c_str()), 0) << sh << "\n" << slurp(err);
+    const std::string s = slurp(work() / "out" / "summary.json");
+    const std::size_t at = s.find("\"threads\": ");
+    return at == std::string::npos ? -1 : std::atoi(s.c_str() + at + 11);
+  };
+  EXPECT_EQ(threads_of("env OMP_NUM_THREADS=3", ""), 3);
+  EXPECT_EQ(threads_of("env OMP_NUM_THREADS=3", "--threads 2"), 2);
+  if (std::system("command -v taskset >/dev/null 2>&1") == 0) {
+    EXPECT_EQ(threads_of("env -u OMP_NUM_THREADS taskset -c 0", ""), 1);
+  }
+  EXPECT_GE(threads_of("env OMP_NUM_THREADS=junk", ""), 1);  // ignored, not fatal
 }
 
 // An elastic body too small to have a finite-particle neighbour set (one particle) is bad

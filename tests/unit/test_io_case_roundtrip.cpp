@@ -109,6 +109,8 @@ void expect_equal(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_SAME(a.output.interval, b.output.interval);
   EXPECT_SAME(a.output.probe_interval, b.output.probe_interval);
   EXPECT_EQ(a.output.vtk, b.output.vtk);
+  EXPECT_EQ(a.output.vtk_precision, b.output.vtk_precision);
+  EXPECT_EQ(a.output.vtk_compression, b.output.vtk_compression);
   EXPECT_EQ(a.output.plot, b.output.plot);
   ASSERT_EQ(a.output.probes.size(), b.output.probes.size());
   for (std::size_t i = 0; i < a.output.probes.size(); ++i) {

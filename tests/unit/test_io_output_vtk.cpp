@@ -1,6 +1,13 @@
-// VtkSeries: .vtp files are well-formed XML with the right point count, arrays, component
-// counts and values that read back exactly; fields.pvd lists every dataset after each frame.
+// VtkSeries: .vtp files are well-formed XML headers with the right point count, arrays,
+// types and component counts, followed by appended raw binary data (optionally zlib) that
+// decodes to the values written (exactly in Float64, rounded to float in Float32); fields.pvd
+// lists every dataset after each frame. tests/readback/vtk_readback.py reads the files of a
+// real run with VTK's own reader.
 #include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cstdint>
+#include <cstring>
 
 #include <charconv>
 #include <filesystem>
@@ -129,22 +136,108 @@ fs::path fresh_dir(const std::string& name) {
   return d;
 }
 
-TEST(IoOutputVtk, VtpStructureAndValuesRoundTrip) {
-  const fs::path dir = fresh_dir("vtk_roundtrip");
+// A .vtp file split into its XML header (parsed) and its appended binary data.
+struct Vtp {
+  Element doc;
+  std::string data;  // bytes after the '_' marker
+  bool zlib = false;
+};
+
+Vtp read_vtp(const std::string& path) {
+  const std::string s = slurp(path);
+  const std::size_t app = s.find("<AppendedData encoding=\"raw\">");
+  EXPECT_NE(app, std::string::npos) << path;
+  const std::size_t mark = s.find('_', app);
+  const std::size_t end = s.rfind("</AppendedData>");
+  Vtp v;
+  v.doc = MiniXml(s.substr(0, app) + "</VTKFile>\n").parse();
+  v.data = s.substr(mark + 1, end - mark - 1);
+  v.zlib = s.find("compressor=\"vtkZLibDataCompressor\"") < app;
+  return v;
+}
+
+std::uint64_t u64(const std::string& d, std::size_t at) {
+  std::uint64_t x = 0;
+  std::memcpy(&x, d.data() + at, 8);
+  return x;
+}
+
+// The decoded values of one <DataArray format="appended">, converted to double.
+std::vector<double> values(const Vtp& v, const Element& da) {
+  EXPECT_EQ(da.attrs.at("format"), "appended");
+  const std::size_t off = std::stoul(da.attrs.at("offset"));
+  std::string bytes;
+  if (!v.zlib) {
+    const std::uint64_t n = u64(v.data, off);
+    bytes = v.data.substr(off + 8, n);
+  } else {
+    const std::uint64_t nb = u64(v.data, off), bs = u64(v.data, off + 8),
+                        last = u64(v.data, off + 16);
+    std::size_t at = off + 24 + 8 * nb;
+    for (std::uint64_t k = 0; k < nb; ++k) {
+      const std::uint64_t cs = u64(v.data, off + 24 + 8 * k);
+      std::string block(k + 1 == nb ? last : bs, '\0');
+      uLongf len = block.size();
+      EXPECT_EQ(uncompress(reinterpret_cast<Bytef*>(block.data()), &len,
+                           reinterpret_cast<const Bytef*>(v.data.data() + at), cs),
+                Z_OK);
+      bytes += block;
+      at += cs;
+    }
+  }
+  const std::string type = da.attrs.at("type");
+  std::vector<double> out;
+  auto take = [&](auto zero) {
+    using T = decltype(zero);
+    EXPECT_EQ(bytes.size() % sizeof(T), 0u);
+    for (std::size_t i = 0; i + sizeof(T) <= bytes.size(); i += sizeof(T)) {
+      T x;
+      std::memcpy(&x, bytes.data() + i, sizeof(T));
+      out.push_back(static_cast<double>(x));
+    }
+  };
+  if (type == "Float64")
+    take(double{});
+  else if (type == "Float32")
+    take(float{});
+  else if (type == "Int32")
+    take(std::int32_t{});
+  else if (type == "Int64")
+    take(std::int64_t{});
+  else
+    ADD_FAILURE() << "unexpected type " << type;
+  return out;
+}
+
+std::vector<double> as_float(const std::vector<double>& v) {
+  std::vector<double> r;
+  for (double x : v) r.push_back(static_cast<float>(x));
+  return r;
+}
+
+void check_roundtrip(const VtkOptions& opt, const std::string& name) {
+  SCOPED_TRACE(name);
+  const fs::path dir = fresh_dir(name);
   const std::vector<Vec2> x{{0.1, 0.2}, {1.0 / 3.0, -2.5e-7}, {1e5, 7.0}};
   PointField p{"pressure", "Pa", 1, {101325.0, -0.1, 1.0 / 7.0}, {}};
   PointField v{"velocity", "m/s", 2, {1, 2, 3, 4, 5, 6}, {}};
-  PointField sig{"stress", "Pa", 3, {1, 2, 3, 4, 5, 6, 7, 8, 9.5}, {"xx", "yy", "xy"}};
+  std::vector<double> s6;
+  for (int i = 0; i < 18; ++i) s6.push_back(0.5 * i + 1.0 / 3.0);
+  PointField sig{"stress", "Pa", 6, s6, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"}};
   PointField f{"deformation_gradient", "-", 4, std::vector<double>(12, 0.25), {}};
+  PointField id{"id", "-", 1, {0, 7, 3000000000.0}, {}, true};  // > 2^31: Int64
+  PointField set{"set", "-", 1, {2, 2, 2}, {}, true};
   {
-    VtkSeries series(dir.string());
-    series.write(0.125, "fluid", x, {p, v, sig, f});
+    VtkSeries series(dir.string(), opt);
+    series.write(0.125, "fluid", x, {p, v, sig, f, id, set});
     series.end_frame();
   }
-  const Element doc = MiniXml(slurp((dir / "vtk/fluid_00000.vtp").string())).parse();
-  const Element* vtk = child(doc, "VTKFile");
+  const Vtp vtp = read_vtp((dir / "vtk/fluid_00000.vtp").string());
+  const Element* vtk = child(vtp.doc, "VTKFile");
   ASSERT_NE(vtk, nullptr);
   EXPECT_EQ(vtk->attrs.at("type"), "PolyData");
+  EXPECT_EQ(vtk->attrs.at("header_type"), "UInt64");
+  EXPECT_EQ(vtp.zlib, opt.zlib);
   const Element* poly = child(*vtk, "PolyData");
   ASSERT_NE(poly, nullptr);
   const Element* fd = child(*poly, "FieldData");
@@ -155,43 +248,84 @@ TEST(IoOutputVtk, VtpStructureAndValuesRoundTrip) {
   ASSERT_NE(piece, nullptr);
   EXPECT_EQ(piece->attrs.at("NumberOfPoints"), "3");
   EXPECT_EQ(piece->attrs.at("NumberOfVerts"), "3");
+  const std::string real = opt.float64 ? "Float64" : "Float32";
+  auto expect_real = [&](const std::vector<double>& got, const std::vector<double>& want) {
+    EXPECT_EQ(got, opt.float64 ? want : as_float(want));  // exact: binary, no text rounding
+  };
 
   const Element* pts = child(*child(*piece, "Points"), "DataArray");
   ASSERT_NE(pts, nullptr);
   EXPECT_EQ(pts->attrs.at("NumberOfComponents"), "3");
-  const auto xyz = numbers(pts->text);
-  ASSERT_EQ(xyz.size(), 9u);
-  for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(xyz[3 * i], x[i].x);  // exact: shortest round-trip text
-    EXPECT_EQ(xyz[3 * i + 1], x[i].y);
-    EXPECT_EQ(xyz[3 * i + 2], 0.0);
-  }
+  EXPECT_EQ(pts->attrs.at("type"), real);
+  std::vector<double> want_xyz;
+  for (const Vec2& q : x) want_xyz.insert(want_xyz.end(), {q.x, q.y, 0.0});
+  expect_real(values(vtp, *pts), want_xyz);
 
   const Element* pd = child(*piece, "PointData");
   ASSERT_NE(pd, nullptr);
-  ASSERT_EQ(pd->children.size(), 4u);
+  ASSERT_EQ(pd->children.size(), 6u);
   std::map<std::string, const Element*> arrays;
   for (const auto& a : pd->children) arrays[a.attrs.at("Name")] = &a;
-  ASSERT_TRUE(arrays.count("pressure") && arrays.count("velocity") && arrays.count("stress") &&
-              arrays.count("deformation_gradient"));
+  ASSERT_EQ(arrays.size(), 6u);
   EXPECT_EQ(arrays["pressure"]->attrs.at("NumberOfComponents"), "1");
   EXPECT_EQ(arrays["pressure"]->attrs.at("unit"), "Pa");
-  EXPECT_EQ(numbers(arrays["pressure"]->text), p.values);
+  EXPECT_EQ(arrays["pressure"]->attrs.at("type"), real);
+  expect_real(values(vtp, *arrays["pressure"]), p.values);
   // 2-component vectors are padded to 3 components for ParaView.
   EXPECT_EQ(arrays["velocity"]->attrs.at("NumberOfComponents"), "3");
   EXPECT_EQ(arrays["velocity"]->attrs.at("unit"), "m/s");
-  EXPECT_EQ(numbers(arrays["velocity"]->text), (std::vector<double>{1, 2, 0, 3, 4, 0, 5, 6, 0}));
-  EXPECT_EQ(arrays["stress"]->attrs.at("NumberOfComponents"), "3");
-  EXPECT_EQ(arrays["stress"]->attrs.at("ComponentName2"), "xy");
-  EXPECT_EQ(numbers(arrays["stress"]->text), sig.values);
+  expect_real(values(vtp, *arrays["velocity"]), {1, 2, 0, 3, 4, 0, 5, 6, 0});
+  // Symmetric tensors: 6 components with names, which ParaView shows as a tensor.
+  EXPECT_EQ(arrays["stress"]->attrs.at("NumberOfComponents"), "6");
+  EXPECT_EQ(arrays["stress"]->attrs.at("ComponentName2"), "ZZ");
+  EXPECT_EQ(arrays["stress"]->attrs.at("ComponentName3"), "XY");
+  expect_real(values(vtp, *arrays["stress"]), sig.values);
   EXPECT_EQ(arrays["deformation_gradient"]->attrs.at("NumberOfComponents"), "4");
-  EXPECT_EQ(numbers(arrays["deformation_gradient"]->text).size(), 12u);
+  EXPECT_EQ(values(vtp, *arrays["deformation_gradient"]).size(), 12u);
+  // Integer fields: Int64 when a value exceeds Int32, else Int32; exact either way.
+  EXPECT_EQ(arrays["id"]->attrs.at("type"), "Int64");
+  EXPECT_EQ(values(vtp, *arrays["id"]), id.values);
+  EXPECT_EQ(arrays["set"]->attrs.at("type"), "Int32");
+  EXPECT_EQ(values(vtp, *arrays["set"]), set.values);
 
   const Element* verts = child(*piece, "Verts");
   ASSERT_NE(verts, nullptr);
   ASSERT_EQ(verts->children.size(), 2u);
-  EXPECT_EQ(numbers(verts->children[0].text), (std::vector<double>{0, 1, 2}));  // connectivity
-  EXPECT_EQ(numbers(verts->children[1].text), (std::vector<double>{1, 2, 3}));  // offsets
+  EXPECT_EQ(values(vtp, verts->children[0]), (std::vector<double>{0, 1, 2}));  // connectivity
+  EXPECT_EQ(values(vtp, verts->children[1]), (std::vector<double>{1, 2, 3}));  // offsets
+}
+
+TEST(IoOutputVtk, Float32RawRoundTrip) {
+  check_roundtrip({}, "vtk_f32");
+}
+TEST(IoOutputVtk, Float64RawRoundTrip) {
+  check_roundtrip({true, false}, "vtk_f64");
+}
+TEST(IoOutputVtk, Float32ZlibRoundTrip) {
+  check_roundtrip({false, true}, "vtk_f32z");
+}
+TEST(IoOutputVtk, Float64ZlibRoundTrip) {
+  check_roundtrip({true, true}, "vtk_f64z");
+}
+
+// A field larger than one 64 KiB zlib block is split into several blocks and decodes whole.
+TEST(IoOutputVtk, ZlibSplitsLargeArraysIntoBlocks) {
+  const fs::path dir = fresh_dir("vtk_zblocks");
+  const std::size_t n = 40000;  // 40000 doubles = 320 kB: 5 blocks
+  std::vector<Vec2> x(n);
+  std::vector<double> p(n);
+  for (std::size_t i = 0; i < n; ++i) x[i] = {0.001 * i, 0.0}, p[i] = std::sin(0.01 * i);
+  {
+    VtkSeries series(dir.string(), {true, true});
+    series.write(0.0, "fluid", x, {{"pressure", "Pa", 1, p, {}}});
+  }
+  const Vtp vtp = read_vtp((dir / "vtk/fluid_00000.vtp").string());
+  const Element* pd =
+      child(*child(*child(*child(vtp.doc, "VTKFile"), "PolyData"), "Piece"), "PointData");
+  ASSERT_NE(pd, nullptr);
+  const std::size_t off = std::stoul(pd->children.at(0).attrs.at("offset"));
+  EXPECT_EQ(u64(vtp.data, off), 5u);  // number of blocks
+  EXPECT_EQ(values(vtp, pd->children.at(0)), p);
 }
 
 TEST(IoOutputVtk, PvdListsEveryDatasetAfterEachFrame) {
@@ -200,7 +334,7 @@ TEST(IoOutputVtk, PvdListsEveryDatasetAfterEachFrame) {
   const std::vector<Vec2> a{{0, 0}, {1, 0}}, b{{0, 1}};
   for (int frame = 0; frame < 3; ++frame) {
     const double t = 0.01 * frame;
-    series.write(t, "fluid", a, {{"rho", "kg/m^3", 1, {1000, 1001}, {}}});
+    series.write(t, "fluid", a, {{"rho", "kg/m^3", 1, {1000, 1001}, {}, false}});
     series.write(t, "cylinder", b, {});
     series.end_frame();
 
@@ -241,6 +375,10 @@ TEST(IoOutputVtk, RejectsInconsistentInput) {
   const std::vector<Vec2> x{{0, 0}, {1, 1}};
   EXPECT_THROW(series.write(0, "fluid", x, {{"p", "Pa", 1, {1.0}, {}}}), std::invalid_argument);
   EXPECT_THROW(series.write(0, "fluid", x, {{"v", "m/s", 0, {}, {}}}), std::invalid_argument);
+  EXPECT_THROW(series.write(0, "fluid", x, {{"s", "Pa", 3, std::vector<double>(6, 1.0), {}}}),
+               std::invalid_argument);  // 3 components: neither vector nor VTK tensor
+  EXPECT_THROW(series.write(0, "fluid", x, {{"id", "-", 1, {1.0, 1.5}, {}, true}}),
+               std::invalid_argument);  // non-integer value in an integer field
   EXPECT_THROW(series.write(0, "bad/name", x, {}), std::invalid_argument);
   series.write(0, "fluid", x, {});
   EXPECT_THROW(series.write(0, "fluid", x, {}), std::invalid_argument);  // twice in a frame

@@ -199,7 +199,11 @@ TEST(SolidBodyOutput, FieldsAndSizes) {
     EXPECT_EQ(fields[k].values.size(), b.size() * fields[k].components);
   }
   // Uniform stretch 1 %: E_xx = 0.01005, equivalent strain 2/3 E_xx.
-  EXPECT_NEAR(fields[3].values[3 * 10], 0.5 * (1.01 * 1.01 - 1.0), 1e-12);
+  EXPECT_NEAR(fields[3].values[6 * 10], 0.5 * (1.01 * 1.01 - 1.0), 1e-12);
+  EXPECT_EQ(fields[3].components, 6);            // symmetric tensor, VTK order xx yy zz xy yz xz
+  EXPECT_EQ(fields[3].values[6 * 10 + 2], 0.0);  // plane strain: E_zz = 0
+  EXPECT_EQ(fields[6].components, 6);
+  EXPECT_NE(fields[6].values[6 * 10 + 2], 0.0);  // plane-strain sigma_zz of the SVK law
   EXPECT_NEAR(fields[4].values[10], 2.0 / 3.0 * 0.5 * (1.01 * 1.01 - 1.0), 1e-12);
   EXPECT_EQ(solid_output_fields(rigid_body("rigid_fixed")).size(), 2u);
   EXPECT_EQ(rigid_body("rigid_fixed").volume(2), kDx * kDx);
