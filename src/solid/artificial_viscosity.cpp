@@ -14,8 +14,9 @@ double monaghan_pi(Vec2 vij, Vec2 xij, double h, double rho0_mean, double c, dou
   return rho0_mean * (-alpha * c * mu + beta * mu * mu);
 }
 
-void compute_artificial_viscosity(const SolidBody& body, std::span<const Vec2> v,
-                                  const Executor& exec, std::span<Vec2> f, std::span<double> q) {
+void compute_artificial_viscosity(const SolidBody& body, const SolidTopology& topo,
+                                  std::span<const Vec2> v, const Executor& exec, std::span<Vec2> f,
+                                  std::span<double> q) {
   const double h = body.kernel.h();
   const SolidMaterial& mat = body.material;
   const bool off = mat.av_alpha == 0.0 && mat.av_beta == 0.0;
@@ -23,15 +24,15 @@ void compute_artificial_viscosity(const SolidBody& body, std::span<const Vec2> v
     Vec2 sum;
     double heat = 0.0;
     if (!off) {
-      for (std::uint32_t k = body.pairs.start[i]; k < body.pairs.start[i + 1]; ++k) {
-        const std::uint32_t j = body.pairs.index[k];
+      for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
+        const std::uint32_t j = topo.pairs.index[k];
         const Vec2 xij = body.x[i] - body.x[j];
         const Vec2 vij = v[i] - v[j];
         const double pi = monaghan_pi(vij, xij, h, 0.5 * (body.rho0[i] + body.rho0[j]),
                                       mat.sound_speed, mat.av_alpha, mat.av_beta);
         if (pi == 0.0) continue;
         const Vec2 c =
-            0.5 * (body.V0[i] * body.grad0[k] - body.V0[j] * body.grad0[body.pair_reverse[k]]);
+            0.5 * (body.V0[i] * topo.grad0[k] - body.V0[j] * topo.grad0[topo.pair_reverse[k]]);
         const double r = norm(xij);
         const double s = pi * norm(c) / r;
         sum += s * xij;

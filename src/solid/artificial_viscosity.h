@@ -22,9 +22,10 @@ class Executor;
 double monaghan_pi(Vec2 vij, Vec2 xij, double h, double rho0_mean, double c, double alpha,
                    double beta);
 
-// Viscous force f (N/m) and heating rate q_i = ½ Σ_j (pair dissipation) [W/m] per particle,
-// from velocities v (spans of body.size()).
-void compute_artificial_viscosity(const SolidBody& body, std::span<const Vec2> v,
-                                  const Executor& exec, std::span<Vec2> f, std::span<double> q);
+// Viscous force f (N/m) and heating rate q_i = ½ Σ_j (pair dissipation) [W/m] per particle
+// over the pairs of `topo`, from velocities v (spans of body.size()).
+void compute_artificial_viscosity(const SolidBody& body, const SolidTopology& topo,
+                                  std::span<const Vec2> v, const Executor& exec, std::span<Vec2> f,
+                                  std::span<double> q);
 
 }  // namespace slamsph

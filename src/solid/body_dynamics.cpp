@@ -10,7 +10,6 @@
 #include "solid/cantilever_mode.h"
 #include "solid/deformation_gradient.h"
 #include "solid/hourglass_control.h"
-#include "solid/reference_gradients.h"
 #include "solid/rigid_motion.h"
 #include "solid/stress_update.h"
 #include "solid/tl_pair_force.h"
@@ -30,7 +29,7 @@ struct ForceScratch {
 // sub-step [s] (0 for the initial state at set-up).
 void update_material(SolidBody& body, double h, const Executor& exec, ForceScratch& s) {
   std::swap(body.F, s.F_old);
-  compute_deformation_gradients(body, exec);
+  compute_deformation_gradients(body, body.topology, exec);
   update_stress(body, s.F_old, h, exec);
 }
 
@@ -44,9 +43,9 @@ void internal_forces(SolidBody& body, std::span<const Vec2> vel, const Executor&
   body.f_av.resize(n);
   body.f_hg.resize(n);
   body.f_int.resize(n);
-  compute_stress_forces(body, exec, s.f_stress);
-  compute_artificial_viscosity(body, vel, exec, body.f_av, s.heat);
-  compute_hourglass_forces(body, body.material.hourglass, exec, body.f_hg);
+  compute_stress_forces(body, body.topology, exec, s.f_stress);
+  compute_artificial_viscosity(body, body.topology, vel, exec, body.f_av, s.heat);
+  compute_hourglass_forces(body, body.topology, body.material.hourglass, exec, body.f_hg);
   exec.for_each(
       n, [&](std::size_t i) { body.f_int[i] = s.f_stress[i] + body.f_av[i] + body.f_hg[i]; });
 }
@@ -84,7 +83,7 @@ void advance_elastic(SolidBody& body, double dt, Vec2 gravity, const Executor& e
     exec.for_each(n, [&](std::size_t i) {
       body.v[i] = body.clamped[i] ? Vec2{} : vhalf[i] + (0.5 * h) * body.a[i];
       // Internal energy (spec §3): de/dt = P : Ḟ / ρ0 (trapezoid in P) + viscous heating.
-      const Mat2 Fdot = reference_gradient(body, vhalf, i);
+      const Mat2 Fdot = reference_gradient(body.topology, vhalf, i);
       const Mat2 Pm = 0.5 * (P_old[i] + body.P[i]);
       body.e[i] += h * (ddot(Pm, Fdot) / body.rho0[i] + s.heat[i] / body.m[i]);
     });
@@ -172,7 +171,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   if (!body.is_elastic()) {
     body.F.clear();
     body.P.clear();
-    body.B.clear();
+    body.topology = SolidTopology{};
     body.e.clear();
     body.f_int.clear();
     return;
@@ -215,7 +214,8 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
 
   const Executor serial(1);
   try {
-    build_reference_operators(body, serial);
+    body.topology = build_solid_topology(
+        body.X, body.V0, TopologySpec{body.scheme, body.dx, body.kernel, {}, false}, serial);
   } catch (const std::invalid_argument& e) {
     throw InputError("body '" + cfg.name + "': " + e.what());
   }
@@ -258,7 +258,7 @@ BodyEnergies body_energies(const SolidBody& body) {
   for (std::size_t i = 0; i < body.size(); ++i)
     en.strain += body.V0[i] * strain_energy_density(body, i);
   en.dissipated = body.dissipated;
-  en.hourglass = hourglass_energy(body, body.material.hourglass, Executor(1));
+  en.hourglass = hourglass_energy(body, body.topology, body.material.hourglass, Executor(1));
   return en;
 }
 

@@ -3,7 +3,7 @@
 //   ∇0 f_i = M_i⁻¹ Σ_{j∈S_i} w_ij (f_j − f_i)(X_j − X_i),
 //   M_i    = Σ_{j∈S_i} w_ij (X_j − X_i) ⊗ (X_j − X_i).
 // Exact for linear fields on any non-degenerate set. The body code evaluates the same
-// operator through precomputed pair weights (solid/reference_gradients.h); this form is the
+// operator through precomputed pair weights (solid/solid_topology.h); this form is the
 // reference used by the tests and for scalar fields.
 #pragma once
 #include <span>

@@ -26,11 +26,13 @@ namespace slamsph {
 
 class Executor;
 
-// E_hg with coefficient alpha, from body.x and body.F (F must be current) [J/m].
-double hourglass_energy(const SolidBody& body, double alpha, const Executor& exec);
+// E_hg with coefficient alpha over the pairs of `topo`, from body.x and body.F (F must be
+// current) [J/m].
+double hourglass_energy(const SolidBody& body, const SolidTopology& topo, double alpha,
+                        const Executor& exec);
 
 // f = −∂E_hg/∂x with coefficient alpha (f zero if alpha == 0); needs current body.F.
-void compute_hourglass_forces(const SolidBody& body, double alpha, const Executor& exec,
-                              std::span<Vec2> f);
+void compute_hourglass_forces(const SolidBody& body, const SolidTopology& topo, double alpha,
+                              const Executor& exec, std::span<Vec2> f);
 
 }  // namespace slamsph

@@ -2,14 +2,8 @@
 // the fluid sees all of them through one contact path (spec §4). Elastic bodies are
 // total-Lagrangian (spec §3): X is the reference configuration, fixed after setup.
 //
-// Elastic state and reference operators (spec §3, filled by setup_body in
-// solid/body_dynamics.h):
-//  - `pairs` is the symmetric pair list the force sum runs over (j in pairs(i) <=> i in
-//    pairs(j)); `pair_reverse[k]` is the position of pair (j, i) in j's list.
-//  - `grad0[k]` for pair k = (i, j) is the corrected reference gradient weight
-//    g_ij = V0_j B_i ∇0W_ij, zero when j is not in i's own gradient set (TL-SFPM: j not in
-//    S_i). Every gradient of a field is then ∇0 f_i = Σ_k (f_j - f_i) ⊗ g_ij and
-//    F_i = Σ_k (x_j - x_i) ⊗ g_ij (solid/deformation_gradient.h).
+// Elastic state is filled by setup_body (solid/body_dynamics.h); the reference pairs and
+// gradient weights are a separate value, SolidTopology (solid/solid_topology.h).
 #pragma once
 #include <cstdint>
 #include <string>
@@ -20,6 +14,7 @@
 #include "core/vec.h"
 #include "solid/body_kind.h"
 #include "solid/materials/material_law_choice.h"
+#include "solid/solid_topology.h"
 
 namespace slamsph {
 
@@ -81,18 +76,15 @@ struct SolidBody {
   // Elastic state (empty for rigid kinds).
   std::vector<Mat2> F;      // deformation gradient [-]
   std::vector<Mat2> P;      // first Piola–Kirchhoff stress [Pa]
-  std::vector<Mat2> B;      // correction matrix (Eq. 11; TL-SFPM: the FPM M_i^-1) [m^-2 m^2]
   std::vector<double> e;    // specific internal energy [J/kg]
   std::vector<Vec2> f_int;  // internal (stress + viscosity + hourglass) force [N/m]
   std::vector<Vec2> f_av;   // its artificial-viscosity part [N/m]
   std::vector<Vec2> f_hg;   // its hourglass-control part [N/m]
   MaterialHistory history;  // the law's per-particle history fields (none for SVK)
 
-  // Reference neighbour structure (built once from X).
-  NeighbourList fpm_sets;                   // TL-SFPM selected sets S_i (empty for TlSph)
-  NeighbourList pairs;                      // symmetric pair list for the force sum
-  std::vector<std::uint32_t> pair_reverse;  // index of (j, i) for pair k = (i, j)
-  std::vector<Vec2> grad0;  // g_ij = V0_j B_i ∇0W_ij per pair (0 if j not in S_i) [1/m]
+  // Reference pairs and gradient weights (solid/solid_topology.h), built at set-up from X;
+  // the solid operators take it as an explicit argument.
+  SolidTopology topology;
 
   SolidMaterial material;  // elastic bodies
   double cfl = 0.5;        // solid CFL number (spec §3), from NumericsConfig::solid_cfl

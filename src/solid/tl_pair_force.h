@@ -18,7 +18,8 @@ namespace slamsph {
 
 class Executor;
 
-// Stress force on every particle from body.P [N/m].
-void compute_stress_forces(const SolidBody& body, const Executor& exec, std::span<Vec2> f);
+// Stress force on every particle from body.P over the pairs of `topo` [N/m].
+void compute_stress_forces(const SolidBody& body, const SolidTopology& topo, const Executor& exec,
+                           std::span<Vec2> f);
 
 }  // namespace slamsph

@@ -187,7 +187,7 @@ TEST(SolidBodyDynamics, FreeSpinningBlockConservesMomentumAndEnergy) {
 TEST(SolidBodyOutput, FieldsAndSizes) {
   SolidBody b = make_body(box_lattice(6, 4, kDx), kDx, "tl_sfpm", plate_material());
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] = Mat2{1.01, 0.0, 0.0, 1.0} * b.X[i];
-  compute_deformation_gradients(b, kExec);
+  compute_deformation_gradients(b, b.topology, kExec);
   update_stress(b, b.F, 0.0, kExec);
   const auto fields = solid_output_fields(b);
   ASSERT_EQ(fields.size(), 9u);

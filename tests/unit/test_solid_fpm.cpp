@@ -31,13 +31,13 @@ double field(Vec2 p) {
 Vec2 body_gradient(const SolidBody& b, std::size_t i) {
   std::vector<Vec2> f(b.size());
   for (std::size_t k = 0; k < b.size(); ++k) f[k] = {field(b.X[k]), 0.0};
-  const Mat2 G = reference_gradient(b, f, i);
+  const Mat2 G = reference_gradient(b.topology, f, i);
   return {G.xx, G.xy};
 }
 
 std::vector<std::uint32_t> set_of(const SolidBody& b, std::size_t i) {
-  return {b.fpm_sets.index.begin() + b.fpm_sets.start[i],
-          b.fpm_sets.index.begin() + b.fpm_sets.start[i + 1]};
+  return {b.topology.fpm_sets.index.begin() + b.topology.fpm_sets.start[i],
+          b.topology.fpm_sets.index.begin() + b.topology.fpm_sets.start[i + 1]};
 }
 
 }  // namespace
@@ -65,14 +65,14 @@ TEST(SolidFpm, SelectionOnCartesianLattice) {
   EXPECT_EQ(s, want);
   // Union pair list is symmetric and the reverse index is right.
   for (std::size_t i = 0; i < b.size(); ++i)
-    for (std::uint32_t k = b.pairs.start[i]; k < b.pairs.start[i + 1]; ++k) {
-      const std::uint32_t rk = b.pair_reverse[k];
-      EXPECT_EQ(b.pairs.index[rk], i);
-      EXPECT_GE(rk, b.pairs.start[b.pairs.index[k]]);
-      EXPECT_LT(rk, b.pairs.start[b.pairs.index[k] + 1]);
+    for (std::uint32_t k = b.topology.pairs.start[i]; k < b.topology.pairs.start[i + 1]; ++k) {
+      const std::uint32_t rk = b.topology.pair_reverse[k];
+      EXPECT_EQ(b.topology.pairs.index[rk], i);
+      EXPECT_GE(rk, b.topology.pairs.start[b.topology.pairs.index[k]]);
+      EXPECT_LT(rk, b.topology.pairs.start[b.topology.pairs.index[k] + 1]);
     }
   // The corner's diagonal partner (1,1) holds the corner only through the union.
-  EXPECT_EQ(b.pairs.count(idx(1, 1)), 5u);
+  EXPECT_EQ(b.topology.pairs.count(idx(1, 1)), 5u);
 }
 
 TEST(SolidFpm, InteriorIsCentralDifferenceEq6) {
@@ -128,7 +128,7 @@ void expect_affine_exact(const SolidBody& b0, double tol) {
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] = A * b.X[i] + Vec2{0.3, -0.2};
   double worst = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
-    const Mat2 F = reference_gradient(b, b.x, i);
+    const Mat2 F = reference_gradient(b.topology, b.x, i);
     const Mat2 d = F - A;
     worst = std::max({worst, std::abs(d.xx), std::abs(d.xy), std::abs(d.yx), std::abs(d.yy)});
   }
@@ -168,13 +168,13 @@ TEST(SolidFpm, CorrectedKernelGradientAtCutSupport) {
   const Vec2 a{2.0, -3.0};
   for (std::size_t i : {idx(0, 0), idx(3, 0), idx(kNx - 1, kNy - 1)}) {
     Vec2 plain, corrected;
-    for (std::uint32_t k = b.pairs.start[i]; k < b.pairs.start[i + 1]; ++k) {
-      const std::uint32_t j = b.pairs.index[k];
+    for (std::uint32_t k = b.topology.pairs.start[i]; k < b.topology.pairs.start[i + 1]; ++k) {
+      const std::uint32_t j = b.topology.pairs.index[k];
       const Vec2 rij = b.X[i] - b.X[j];
       const Vec2 gw = b.kernel.dw_over_r(norm(rij)) * rij;
       const double df = dot(a, b.X[j] - b.X[i]);
       plain += (b.V0[j] * df) * gw;
-      corrected += df * b.grad0[k];
+      corrected += df * b.topology.grad0[k];
     }
     EXPECT_NEAR(corrected.x, a.x, 1e-12);
     EXPECT_NEAR(corrected.y, a.y, 1e-12);

@@ -69,7 +69,7 @@ TEST(SolidMaterialHistory, DeclaredFieldsReachTheBodyAndTheOutput) {
   }
   // Yield every particle in uniaxial strain, then check the plastic strain is output.
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] = Mat2{1.01, 0.0, 0.0, 1.0} * b.X[i];
-  compute_deformation_gradients(b, Executor(1));
+  compute_deformation_gradients(b, b.topology, Executor(1));
   update_stress(b, b.F, 0.0, Executor(1));
   bool found = false;
   for (const SolidField& f : solid_output_fields(b))

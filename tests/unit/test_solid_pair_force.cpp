@@ -36,16 +36,16 @@ SolidBody deformed_body(const char* scheme, double hourglass, unsigned seed) {
     b.x[i] = A * b.X[i] + Vec2{0.05 * kDx * u(gen), 0.05 * kDx * u(gen)};
     b.v[i] = {u(gen), u(gen)};
   }
-  compute_deformation_gradients(b, kExec);
+  compute_deformation_gradients(b, b.topology, kExec);
   update_stress(b, b.F, 0.0, kExec);
   return b;
 }
 
 double total_energy(SolidBody& b, double hourglass) {
-  compute_deformation_gradients(b, kExec);
+  compute_deformation_gradients(b, b.topology, kExec);
   double e = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) e += b.V0[i] * strain_energy_density(b, i);
-  return e + hourglass_energy(b, hourglass, kExec);
+  return e + hourglass_energy(b, b.topology, hourglass, kExec);
 }
 
 }  // namespace
@@ -58,7 +58,7 @@ TEST_P(PairForce, VirialIdentityFixesTheTranspose) {
   std::uniform_real_distribution<double> u(-1e5, 1e5);
   for (Mat2& P : b.P) P = {u(gen), u(gen), u(gen), u(gen)};
   std::vector<Vec2> f(b.size());
-  compute_stress_forces(b, kExec, f);
+  compute_stress_forces(b, b.topology, kExec, f);
   Mat2 lhs, rhs;
   double scale = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -76,8 +76,8 @@ TEST_P(PairForce, ForcesAreEnergyGradients) {
   const double hg = 0.7;
   SolidBody b = deformed_body(GetParam(), hg, 11);
   std::vector<Vec2> fs(b.size()), fh(b.size());
-  compute_stress_forces(b, kExec, fs);
-  compute_hourglass_forces(b, hg, kExec, fh);
+  compute_stress_forces(b, b.topology, kExec, fs);
+  compute_hourglass_forces(b, b.topology, hg, kExec, fh);
   const double eps = 1e-7 * kDx;
   double fmax = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) fmax = std::max(fmax, norm(fs[i] + fh[i]));
@@ -97,9 +97,9 @@ TEST_P(PairForce, MomentumConservedToRoundOff) {
   SolidBody b = deformed_body(GetParam(), 1.0, 21);
   std::vector<Vec2> fs(b.size()), fv(b.size()), fh(b.size());
   std::vector<double> q(b.size());
-  compute_stress_forces(b, kExec, fs);
-  compute_artificial_viscosity(b, b.v, kExec, fv, q);
-  compute_hourglass_forces(b, 1.0, kExec, fh);
+  compute_stress_forces(b, b.topology, kExec, fs);
+  compute_artificial_viscosity(b, b.topology, b.v, kExec, fv, q);
+  compute_hourglass_forces(b, b.topology, 1.0, kExec, fh);
   for (const auto* f : {&fs, &fv, &fh}) {
     Vec2 sum;
     double torque = 0.0, scale = 0.0, tscale = 0.0;
@@ -133,11 +133,11 @@ TEST_P(PairForce, UniformStressGivesZeroInteriorForce) {
   SolidBody b = make_body(box_lattice(nx, ny, kDx), kDx, GetParam(), plate_material());
   const Mat2 A{1.03, 0.02, 0.05, 0.99};
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] = A * b.X[i];
-  compute_deformation_gradients(b, kExec);
+  compute_deformation_gradients(b, b.topology, kExec);
   update_stress(b, b.F, 0.0, kExec);
   const Mat2 P = svk_pk1(std::get<StVenantKirchhoff>(b.material.law).parameters(), A);
   std::vector<Vec2> f(b.size());
-  compute_stress_forces(b, kExec, f);
+  compute_stress_forces(b, b.topology, kExec, f);
   const double unit = (std::abs(P.xx) + std::abs(P.yy)) * kDx;  // boundary force scale
   for (int j = margin; j < ny - margin; ++j)
     for (int i = margin; i < nx - margin; ++i) EXPECT_LT(norm(f[j * nx + i]), 1e-10 * unit);
@@ -157,18 +157,18 @@ TEST_P(PairForce, RigidRotationGivesZeroStressAndForce) {
   const double th = 0.8;
   const Mat2 Q{std::cos(th), -std::sin(th), std::sin(th), std::cos(th)};
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] = Q * b.X[i] + Vec2{1.0, 2.0};
-  compute_deformation_gradients(b, kExec);
+  compute_deformation_gradients(b, b.topology, kExec);
   update_stress(b, b.F, 0.0, kExec);
   std::vector<Vec2> fs(b.size()), fh(b.size());
-  compute_stress_forces(b, kExec, fs);
-  compute_hourglass_forces(b, 1.0, kExec, fh);
+  compute_stress_forces(b, b.topology, kExec, fs);
+  compute_hourglass_forces(b, b.topology, 1.0, kExec, fh);
   const double E = b.material.youngs_modulus;
   for (std::size_t i = 0; i < b.size(); ++i) {
     const Mat2& P = b.P[i];
     EXPECT_LT(std::abs(P.xx) + std::abs(P.xy) + std::abs(P.yx) + std::abs(P.yy), 1e-9 * E);
     EXPECT_LT(norm(fs[i]) + norm(fh[i]), 1e-9 * E * kDx);
   }
-  EXPECT_LT(hourglass_energy(b, 1.0, kExec), 1e-20 * E);
+  EXPECT_LT(hourglass_energy(b, b.topology, 1.0, kExec), 1e-20 * E);
 }
 
 INSTANTIATE_TEST_SUITE_P(Schemes, PairForce, ::testing::Values("tl_sfpm", "tlsph"));

@@ -81,9 +81,9 @@ PlateResult run_plate(const char* scheme, int layers, double hourglass, double a
       double strain = 0.0;
       r.energy_drift = std::max(r.energy_drift, std::abs(total(&strain) - E0) / E0);
       if (t > T_ref / 8) {
-        compute_deformation_gradients(b, exec);
-        r.zigzag_ratio =
-            std::max(r.zigzag_ratio, hourglass_energy(b, 1.0, exec) / std::max(strain, 1e-30));
+        compute_deformation_gradients(b, b.topology, exec);
+        r.zigzag_ratio = std::max(
+            r.zigzag_ratio, hourglass_energy(b, b.topology, 1.0, exec) / std::max(strain, 1e-30));
       }
     }
   }

@@ -56,8 +56,8 @@ BarResult run_bar(const char* scheme, int layers, double v0) {
         if (j != i) r.min_distance = std::min(r.min_distance, norm(b.x[j] - b.x[i]) / dx);
       });
     for (std::size_t i = 0; i < b.size(); ++i)
-      for (std::uint32_t k = b.pairs.start[i]; k < b.pairs.start[i + 1]; ++k) {
-        const std::uint32_t j = b.pairs.index[k];
+      for (std::uint32_t k = b.topology.pairs.start[i]; k < b.topology.pairs.start[i + 1]; ++k) {
+        const std::uint32_t j = b.topology.pairs.index[k];
         if (norm(b.X[j] - b.X[i]) < 1.01 * dx)
           r.max_pair_gap = std::max(r.max_pair_gap, norm(b.x[j] - b.x[i]) / dx);
       }
