@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <type_traits>
 
 #include "app/validation_report.h"
 #include "core/parallel.h"
@@ -12,16 +13,6 @@
 #include "solid/body_dynamics.h"
 
 namespace slamsph {
-
-namespace {
-
-std::vector<double> vec_values(const std::vector<Vec2>& v) {
-  std::vector<double> out(2 * v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) out[2 * i] = v[i].x, out[2 * i + 1] = v[i].y;
-  return out;
-}
-
-}  // namespace
 
 Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiStepper& stepper,
                    const ProbeSet& probes, const Executor& exec)
@@ -118,17 +109,22 @@ void Recorder::write_frame() {
   const FsiSystem& sys = st_.system();
   const FluidParticles& fluid = sys.fluid;
   const double time = st_.time();
+  // Stored fields flagged for VTK in their registry (core/field_registry.h), then the set
+  // index (0 = fluid, b + 1 = body b) for colouring.
+  auto registry_fields = [](const auto& set, std::vector<PointField>& out) {
+    std::decay_t<decltype(set)>::visit_fields(set, [&](const FieldSpec& spec, const auto& f) {
+      using T = typename std::decay_t<decltype(f)>::value_type;
+      if (!spec.vtk) return;
+      std::vector<std::string> names;
+      if (field_components<T>() == 4) names = {"xx", "xy", "yx", "yy"};
+      out.push_back({std::string(spec.name), std::string(spec.unit), field_components<T>(),
+                     field_as_doubles(f), names, std::is_integral_v<T>});
+    });
+  };
   if (fluid.size() > 0) {
     std::vector<PointField> ff;
-    ff.push_back({"velocity", "m/s", 2, vec_values(fluid.v), {}});
-    ff.push_back({"pressure", "Pa", 1, fluid.p, {}});
-    ff.push_back({"density", "kg/m^3", 1, fluid.rho, {}});
-    std::vector<double> id(fluid.size()), set(fluid.size(), 0.0);
-    for (std::size_t i = 0; i < fluid.size(); ++i) id[i] = static_cast<double>(fluid.id[i]);
-    ff.push_back({"id", "-", 1, id, {}, true});
-    ff.push_back({"set", "-", 1, set, {}, true});
-    std::vector<double> crossed(fluid.crossed.begin(), fluid.crossed.end());
-    ff.push_back({"crossed_solid", "-", 1, crossed, {}, true});  // leak flag (1 = crossed)
+    registry_fields(fluid, ff);
+    ff.push_back({"set", "-", 1, std::vector<double>(fluid.size(), 0.0), {}, true});
     vtk_->write(time, "fluid", fluid.x, ff);
   }
   for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
@@ -141,14 +137,12 @@ void Recorder::write_frame() {
       bf.push_back({sf.name, sf.unit, sf.components, std::move(sf.values), names});
     }
     std::vector<double> pv(body.size()), id(body.size()), set(body.size(), double(b + 1));
-    std::vector<Vec2> force(body.size());
     for (std::size_t i = 0; i < body.size(); ++i) {
       pv[i] = sys.contact.p[sys.layout.offset[b] + i];
       id[i] = static_cast<double>(i);
-      force[i] = body.f_fluid[i];
     }
     bf.push_back({"contact_pressure", "Pa", 1, pv, {}});
-    bf.push_back({"fluid_force", "N/m", 2, vec_values(force), {}});
+    registry_fields(body, bf);
     bf.push_back({"id", "-", 1, id, {}, true});
     bf.push_back({"set", "-", 1, set, {}, true});
     vtk_->write(time, body.name, body.x, bf);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/field_registry.h"
 #include "core/vec.h"
 
 namespace slamsph {
@@ -33,23 +34,28 @@ struct ContactParticles {
   bool faces(std::size_t s, Vec2 xf) const {
     return !ghost[s] || dot(xf - anchor[s], normal[s]) > 0.0;
   }
-  void resize(std::size_t n) {
-    x.resize(n);
-    v.resize(n);
-    a.resize(n);
-    volume.resize(n);
-    p.resize(n);
-    rho.resize(n);
-    v_noslip.resize(n);
-    wetted.resize(n);
-    normal.resize(n);
-    force.resize(n);
-    force_viscous.resize(n);
-    body.resize(n);
-    local.resize(n);
-    ghost.resize(n);
-    anchor.resize(n);
+  // The field list. body, local and ghost are the layout (coupling/contact_layout.h),
+  // rebuilt from the case; the rest is the state of the last rate evaluation, which the
+  // outputs between steps read (contact pressure, wetted flags).
+  template <class Self, class F>
+  static void visit_fields(Self& s, F&& f) {
+    f(FieldSpec{"position", "m", true, false}, s.x);
+    f(FieldSpec{"velocity", "m/s", true, false}, s.v);
+    f(FieldSpec{"acceleration", "m/s^2", true, false}, s.a);
+    f(FieldSpec{"volume", "m^2", true, false}, s.volume);
+    f(FieldSpec{"pressure", "Pa", true, false}, s.p);
+    f(FieldSpec{"density", "kg/m^3", true, false}, s.rho);
+    f(FieldSpec{"velocity_noslip", "m/s", true, false}, s.v_noslip);
+    f(FieldSpec{"wetted", "-", true, false}, s.wetted);
+    f(FieldSpec{"normal", "-", true, false}, s.normal);
+    f(FieldSpec{"force", "N/m", true, false}, s.force);
+    f(FieldSpec{"force_viscous", "N/m", true, false}, s.force_viscous);
+    f(FieldSpec{"body", "-", false, false}, s.body);
+    f(FieldSpec{"local", "-", false, false}, s.local);
+    f(FieldSpec{"ghost", "-", false, false}, s.ghost);
+    f(FieldSpec{"anchor", "m", true, false}, s.anchor);
   }
+  void resize(std::size_t n) { resize_fields(*this, n); }
 };
 
 }  // namespace slamsph

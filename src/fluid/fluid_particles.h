@@ -1,8 +1,11 @@
-// Structure-of-arrays storage of the water particles (style.md §4).
+// Structure-of-arrays storage of the water particles (style.md §4). Every field is
+// declared once, in visit_fields (core/field_registry.h): resize, reordering, VTK output
+// and checkpoints loop over that list.
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "core/field_registry.h"
 #include "core/vec.h"
 
 namespace slamsph {
@@ -22,39 +25,30 @@ struct FluidParticles {
   std::vector<std::uint8_t> crossed;  // 1 once the particle was found inside a solid
   std::vector<double> volume;         // m/rho, refreshed by each rate pass (scratch)
 
-  std::size_t size() const { return x.size(); }
-  void resize(std::size_t n) {
-    x.resize(n);
-    v.resize(n);
-    a.resize(n);
-    rho.resize(n);
-    drho.resize(n);
-    p.resize(n);
-    m.resize(n);
-    id.resize(n);
-    v_half.resize(n);
-    rho_half.resize(n);
-    crossed.resize(n);
-    volume.resize(n);
+  // The field list. v_half and rho_half live only inside a step and volume only inside a
+  // rate pass, so a checkpoint between steps does not need them.
+  template <class Self, class F>
+  static void visit_fields(Self& s, F&& f) {
+    f(FieldSpec{"position", "m", true, false}, s.x);  // the VTK points
+    f(FieldSpec{"velocity", "m/s", true, true}, s.v);
+    f(FieldSpec{"pressure", "Pa", true, true}, s.p);
+    f(FieldSpec{"density", "kg/m^3", true, true}, s.rho);
+    f(FieldSpec{"id", "-", true, true}, s.id);
+    f(FieldSpec{"crossed_solid", "-", true, true}, s.crossed);  // leak counter flag
+    f(FieldSpec{"acceleration", "m/s^2", true, false}, s.a);
+    f(FieldSpec{"density_rate", "kg/m^3/s", true, false}, s.drho);
+    f(FieldSpec{"mass", "kg/m", true, false}, s.m);
+    f(FieldSpec{"velocity_half_step", "m/s", false, false}, s.v_half);
+    f(FieldSpec{"density_half_step", "kg/m^3", false, false}, s.rho_half);
+    f(FieldSpec{"volume", "m^2", false, false}, s.volume);
   }
+
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n) { resize_fields(*this, n); }
   // Reorders every field: new[k] = old[perm[k]] (used to keep memory in cell order).
   template <class Index>
   void permute(const std::vector<Index>& perm) {
-    auto apply = [&](auto& f) {
-      auto old = f;
-      for (std::size_t k = 0; k < perm.size(); ++k) f[k] = old[perm[k]];
-    };
-    apply(x);
-    apply(v);
-    apply(a);
-    apply(rho);
-    apply(drho);
-    apply(p);
-    apply(m);
-    apply(id);
-    apply(v_half);
-    apply(rho_half);
-    apply(crossed);
+    permute_fields(*this, perm);
   }
 };
 

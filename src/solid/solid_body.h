@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/cell_grid.h"
+#include "core/field_registry.h"
 #include "core/kernel.h"
 #include "core/vec.h"
 #include "solid/body_kind.h"
@@ -95,6 +96,49 @@ struct SolidBody {
   double hourglass_work = 0.0;  // work done against the hourglass control (its potential
                                 // is reported by body_energies; this is a cross-check)
   double external_work = 0.0;   // work done by gravity and the fluid force
+
+  // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
+  // clamps, layers, B) is rebuilt from the case by setup_body, so it is not persistent;
+  // f_av and f_hg are recomputed before every use inside a sub-step. Derived output
+  // (strains, stresses, and velocity, F, P in their output form) comes from
+  // solid_output_fields (solid/body_dynamics.h).
+  template <class Self, class F>
+  static void visit_fields(Self& s, F&& f) {
+    f(FieldSpec{"position", "m", true, false}, s.x);  // the VTK points
+    f(FieldSpec{"velocity", "m/s", true, false}, s.v);
+    f(FieldSpec{"acceleration", "m/s^2", true, false}, s.a);
+    f(FieldSpec{"fluid_force", "N/m", true, true}, s.f_fluid);
+    f(FieldSpec{"deformation_gradient", "-", true, false}, s.F);
+    f(FieldSpec{"pk1_stress", "Pa", true, false}, s.P);
+    f(FieldSpec{"specific_internal_energy", "J/kg", true, false}, s.e);
+    f(FieldSpec{"internal_force", "N/m", true, false}, s.f_int);
+    f(FieldSpec{"viscous_force", "N/m", false, false}, s.f_av);
+    f(FieldSpec{"hourglass_force", "N/m", false, false}, s.f_hg);
+    f(FieldSpec{"reference_position", "m", false, false}, s.X);
+    f(FieldSpec{"mass", "kg/m", false, false}, s.m);
+    f(FieldSpec{"reference_volume", "m^2", false, false}, s.V0);
+    f(FieldSpec{"reference_density", "kg/m^3", false, false}, s.rho0);
+    f(FieldSpec{"clamped", "-", false, false}, s.clamped);
+    f(FieldSpec{"layer", "-", false, false}, s.layer);
+    f(FieldSpec{"correction_matrix", "-", false, false}, s.B);
+  }
+  // The body's state that is not per particle: rigid motion and energy accumulators.
+  template <class Self, class F>
+  static void visit_scalars(Self& s, F&& f) {
+    f("rigid_mass", s.rigid.mass);
+    f("rigid_inertia", s.rigid.inertia);
+    f("rigid_com", s.rigid.com);
+    f("rigid_com0", s.rigid.com0);
+    f("rigid_angle", s.rigid.angle);
+    f("rigid_velocity", s.rigid.vel);
+    f("rigid_omega", s.rigid.omega);
+    f("rigid_acceleration", s.rigid.acc);
+    f("rigid_alpha", s.rigid.alpha);
+    f("dissipated", s.dissipated);
+    f("hourglass_work", s.hourglass_work);
+    f("external_work", s.external_work);
+    f("last_substeps", s.last_substeps);
+  }
 
   std::size_t size() const { return X.size(); }
   bool is_elastic() const { return kind == BodyKind::Elastic; }
