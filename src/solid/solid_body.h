@@ -121,6 +121,11 @@ struct SolidBody {
     f(FieldSpec{"clamped", "-", false, false}, s.clamped);
     f(FieldSpec{"layer", "-", false, false}, s.layer);
     f(FieldSpec{"correction_matrix", "-", false, false}, s.B);
+    // The material law's history fields, under the names the law declares
+    // (solid/materials/material_law.h); solid_output_fields writes those marked for output.
+    for (std::size_t k = 0; k < s.history.fields.size(); ++k)
+      f(FieldSpec{s.history.fields[k].name, s.history.fields[k].unit, true, false},
+        s.history.values[k]);
   }
   // The body's state that is not per particle: rigid motion and energy accumulators.
   template <class Self, class F>
@@ -138,6 +143,7 @@ struct SolidBody {
     f("hourglass_work", s.hourglass_work);
     f("external_work", s.external_work);
     f("last_substeps", s.last_substeps);
+    f("material_updates", s.history.updates);
   }
 
   std::size_t size() const { return X.size(); }
