@@ -98,7 +98,7 @@ struct SolidBody {
   double external_work = 0.0;   // work done by gravity and the fluid force
 
   // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
-  // clamps, layers, B) is rebuilt from the case by setup_body, so it is not persistent;
+  // clamps, layers; the topology) is rebuilt from the case by setup_body, so it is not persistent;
   // f_av and f_hg are recomputed before every use inside a sub-step. Derived output
   // (strains, stresses, and velocity, F, P in their output form) comes from
   // solid_output_fields (solid/body_dynamics.h).
@@ -120,7 +120,6 @@ struct SolidBody {
     f(FieldSpec{"reference_density", "kg/m^3", false, false}, s.rho0);
     f(FieldSpec{"clamped", "-", false, false}, s.clamped);
     f(FieldSpec{"layer", "-", false, false}, s.layer);
-    f(FieldSpec{"correction_matrix", "-", false, false}, s.B);
     // The material law's history fields, under the names the law declares
     // (solid/materials/material_law.h); solid_output_fields writes those marked for output.
     for (std::size_t k = 0; k < s.history.fields.size(); ++k)
