@@ -1,0 +1,151 @@
+// Golden regression of a whole run: `slamsph run tests/regression/golden/fsi_small.toml
+// --max-steps 400 --threads 2` (water column, elastic SVK gate, J2-plastic plate bending
+// under its weight, free rigid disc entering the water). The last row of forces.csv and
+// probes.csv (every column) and selected columns of bodies.csv must equal the stored
+// values to a relative 1e-9 (zeros exactly). Columns are found by header name, so added
+// columns do not matter; a renamed or missing one fails.
+//
+// The golden numbers were derived from the code as landed (commit 08d1a40, 2026-11-29) by
+// running this test with SLAMSPH_PRINT_GOLDEN=1. 400 steps keep round-off growth in the
+// water far below the tolerance; a physics change of any operator in the step changes
+// these values at the 1e-6 level or more (see the per-operator goldens in
+// test_coupling_golden.cpp). Regenerate deliberately, and say so, when physics changes.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Values = std::vector<std::pair<std::string, double>>;
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+// Header and last row of a CSV file.
+std::pair<std::vector<std::string>, std::vector<std::string>> last_row(const fs::path& p) {
+  std::ifstream in(p);
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return {split(header), split(last)};
+}
+
+Values pick(const fs::path& p, const std::vector<std::string>& columns) {
+  const auto [h, row] = last_row(p);
+  Values v;
+  for (std::size_t k = 0; k < h.size() && k < row.size(); ++k)
+    if (columns.empty() || std::find(columns.begin(), columns.end(), h[k]) != columns.end())
+      v.push_back({h[k], std::stod(row[k])});
+  return v;
+}
+
+void compare(const char* group, const Values& got, const Values& want) {
+  if (std::getenv("SLAMSPH_PRINT_GOLDEN")) {
+    std::printf("  // %s\n", group);
+    for (const auto& [k, v] : got) std::printf("  {\"%s\", %.12e},\n", k.c_str(), v);
+    return;
+  }
+  for (const auto& [name, value] : want) {
+    const auto it =
+        std::find_if(got.begin(), got.end(), [&](const auto& g) { return g.first == name; });
+    ASSERT_NE(it, got.end()) << group << ": no column " << name;
+    EXPECT_NEAR(it->second, value, 1e-9 * std::abs(value)) << group << ": " << name;
+  }
+}
+
+// clang-format off
+const Values kForces{
+  {"time [s]", 3.152898807603e-02},
+  {"tank Fx [N/m]", -8.483663876692e+01},
+  {"tank Fy [N/m]", -1.230873256773e+02},
+  {"tank Fx_pressure [N/m]", -8.483663876692e+01},
+  {"tank Fy_pressure [N/m]", -1.230873256773e+02},
+  {"tank Fx_viscous [N/m]", 0.000000000000e+00},
+  {"tank Fy_viscous [N/m]", 0.000000000000e+00},
+  {"gate Fx [N/m]", 3.424161501936e+01},
+  {"gate Fy [N/m]", 2.819680321743e+00},
+  {"gate Fx_pressure [N/m]", 3.424161501936e+01},
+  {"gate Fy_pressure [N/m]", 2.819680321743e+00},
+  {"gate Fx_viscous [N/m]", 0.000000000000e+00},
+  {"gate Fy_viscous [N/m]", 0.000000000000e+00},
+  {"plate Fx [N/m]", 0.000000000000e+00},
+  {"plate Fy [N/m]", 0.000000000000e+00},
+  {"plate Fx_pressure [N/m]", 0.000000000000e+00},
+  {"plate Fy_pressure [N/m]", 0.000000000000e+00},
+  {"plate Fx_viscous [N/m]", 0.000000000000e+00},
+  {"plate Fy_viscous [N/m]", 0.000000000000e+00},
+  {"disc Fx [N/m]", 4.578539351799e-01},
+  {"disc Fy [N/m]", 7.466284446442e+00},
+  {"disc Fx_pressure [N/m]", 4.578539351799e-01},
+  {"disc Fy_pressure [N/m]", 7.466284446442e+00},
+  {"disc Fx_viscous [N/m]", 0.000000000000e+00},
+  {"disc Fy_viscous [N/m]", 0.000000000000e+00},
+};
+const Values kProbes{
+  {"time [s]", 3.152898807603e-02},
+  {"p_floor [Pa]", 1.156072924141e+03},
+  {"gate_tip_x [m]", 6.237271216112e-03},
+  {"gate_tip_y [m]", 1.206827981475e-04},
+  {"plate_end_x [m]", -1.499083289022e-04},
+  {"plate_end_y [m]", -6.558719340139e-03},
+  {"leaked_particles [-]", 0.000000000000e+00},
+};
+const Values kBodies{
+  {"gate kinetic [J/m]", 5.060149486857e-02},
+  {"gate strain [J/m]", 3.590781277254e-02},
+  {"gate dissipated [J/m]", 1.708085777293e-04},
+  {"gate hourglass [J/m]", 4.550198126547e-04},
+  {"plate com_y [m]", 4.518010130810e-03},
+  {"plate kinetic [J/m]", 1.141361468132e-01},
+  {"plate strain [J/m]", 8.070162529401e-04},
+  {"plate dissipated [J/m]", 9.842049162193e-04},
+  {"disc com_y [m]", 1.518914930008e-01},
+  {"disc vel_x [m/s]", 1.157871736002e-02},
+  {"disc vel_y [m/s]", -6.766099829672e-01},
+};
+// clang-format on
+
+}  // namespace
+
+TEST(GoldenRun, SmallFsiCaseLastRows) {
+  ASSERT_TRUE(fs::exists(SLAMSPH_BINARY)) << "build the slamsph target first";
+  const fs::path root =
+      fs::temp_directory_path() / ("slamsph_golden_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root);
+  const std::string cmd = std::string("'") + SLAMSPH_BINARY + "' run '" + SLAMSPH_SOURCE_DIR +
+                          "/tests/regression/golden/fsi_small.toml' --max-steps 400 --threads 2" +
+                          " --quiet --out '" + (root / "out").string() + "' > '" +
+                          (root / "log.txt").string() + "' 2>&1";
+  const int st = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(st)) << cmd;
+  ASSERT_EQ(WEXITSTATUS(st), 0) << cmd;
+  compare("forces.csv", pick(root / "out" / "forces.csv", {}), kForces);
+  compare("probes.csv", pick(root / "out" / "probes.csv", {}), kProbes);
+  compare(
+      "bodies.csv",
+      pick(root / "out" / "bodies.csv",
+           {"gate kinetic [J/m]", "gate strain [J/m]", "gate dissipated [J/m]",
+            "gate hourglass [J/m]", "plate com_y [m]", "plate kinetic [J/m]", "plate strain [J/m]",
+            "plate dissipated [J/m]", "disc com_y [m]", "disc vel_x [m/s]", "disc vel_y [m/s]"}),
+      kBodies);
+  if (!HasFailure()) fs::remove_all(root);
+}
