@@ -2,14 +2,17 @@
 // --max-steps 400 --threads 2` (water column, elastic SVK gate, J2-plastic plate bending
 // under its weight, free rigid disc entering the water). The last row of forces.csv and
 // probes.csv (every column) and selected columns of bodies.csv must equal the stored
-// values to a relative 1e-9 (zeros exactly). Columns are found by header name, so added
+// values to a relative 1e-7 (zeros exactly). Columns are found by header name, so added
 // columns do not matter; a renamed or missing one fails.
 //
 // The golden numbers were derived from the code as landed (commit 08d1a40, 2026-11-29) by
-// running this test with SLAMSPH_PRINT_GOLDEN=1. 400 steps keep round-off growth in the
-// water far below the tolerance; a physics change of any operator in the step changes
-// these values at the 1e-6 level or more (see the per-operator goldens in
-// test_coupling_golden.cpp). Regenerate deliberately, and say so, when physics changes.
+// running this test with SLAMSPH_PRINT_GOLDEN=1. Round-off grows over the run: changing
+// gravity by 2e-16 relative (--set numerics.gravity=[0.0,-9.810000000000002]) moves these
+// values by up to 3.2e-9 relative after 400 steps, hence the tolerance 1e-7, which a change
+// of summation order passes and a physics change of an operator in the step does not (a
+// 1e-6 relative change of the contact p* fails it; see also the per-operator goldens in
+// test_coupling_golden.cpp, compared to 1e-9). Regenerate deliberately, and say so, when
+// physics changes.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -67,7 +70,7 @@ void compare(const char* group, const Values& got, const Values& want) {
     const auto it =
         std::find_if(got.begin(), got.end(), [&](const auto& g) { return g.first == name; });
     ASSERT_NE(it, got.end()) << group << ": no column " << name;
-    EXPECT_NEAR(it->second, value, 1e-9 * std::abs(value)) << group << ": " << name;
+    EXPECT_NEAR(it->second, value, 1e-7 * std::abs(value)) << group << ": " << name;
   }
 }
 
