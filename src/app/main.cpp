@@ -207,6 +207,7 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  slamsph::Executor::use_passive_waiting(argv);
   try {
     return dispatch(argc, argv);
   } catch (const slamsph::InputError& e) {

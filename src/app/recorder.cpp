@@ -211,6 +211,7 @@ void Recorder::write_summary(const RunStatus& status,
   const double ps = wall > 0.0 ? double(sys.fluid.size()) * double(st_.steps()) / wall : 0.0;
   summary.set("fluid_particle_steps_per_second", ps);
   summary.set("threads", exec_.threads());
+  summary.set("thread_wait_policy", Executor::wait_policy());
   summary.set("neighbour_rebuilds", st_.lists().rebuilds());
   summary.set("leaked_particles", st_.leaked_particles());
   summary.set("warnings", warnings);  // the set-up warnings printed before the run

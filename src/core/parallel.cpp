@@ -1,9 +1,11 @@
 #include "core/parallel.h"
 
 #include <sched.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <thread>
 
 namespace slamsph {
@@ -35,6 +37,24 @@ int Executor::default_threads() {
   if (const int n = env_threads(); n > 0) return n;
   if (const int n = affinity_threads(); n > 0) return n;
   return hardware_threads();
+}
+
+void Executor::use_passive_waiting(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
+  // Under valgrind (its preload library is in LD_PRELOAD) an exec would leave the tool and
+  // run natively; callgrind counts do not depend on the wait policy anyway.
+  const char* preload = std::getenv("LD_PRELOAD");
+  if (preload && std::strstr(preload, "vgpreload")) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  execv("/proc/self/exe", argv);
+  // Only reached if exec failed (no /proc): undo, so a child process sees what we saw.
+  unsetenv("OMP_WAIT_POLICY");
+}
+
+std::string Executor::wait_policy() {
+  if (const char* v = std::getenv("OMP_WAIT_POLICY")) return std::string("OMP_WAIT_POLICY=") + v;
+  if (const char* v = std::getenv("GOMP_SPINCOUNT")) return std::string("GOMP_SPINCOUNT=") + v;
+  return "libgomp default";
 }
 
 }  // namespace slamsph

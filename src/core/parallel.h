@@ -5,6 +5,7 @@
 #pragma once
 #include <cstddef>
 #include <limits>
+#include <string>
 
 namespace slamsph {
 
@@ -70,6 +71,19 @@ class Executor {
   // The default thread count of a run: OMP_NUM_THREADS, else the affinity mask, else the
   // hardware.
   static int default_threads();
+
+  // Call first thing in main(). libgomp spins up to ~300 000 iterations at every barrier
+  // before it sleeps; when the cores are shared with other processes a spinning thread
+  // holds a core its partner needs, and a run with 2 threads on 2 busy cores measured 7-20x
+  // slower than with 1 thread (/work notes of issue 12; README "Threads"). Waiting threads
+  // should sleep instead (OMP_WAIT_POLICY=passive), but libgomp reads that variable only
+  // once, when it is loaded, before main() runs. So, unless the user has chosen a policy
+  // (OMP_WAIT_POLICY or GOMP_SPINCOUNT is set), this sets OMP_WAIT_POLICY=passive and
+  // re-executes the program (/proc/self/exe) with the same arguments. Returns only if no
+  // re-execution was needed or it failed (the run then goes on with libgomp's default).
+  static void use_passive_waiting(char** argv);
+  // The wait policy in force: "OMP_WAIT_POLICY=<v>", "GOMP_SPINCOUNT=<v>" or "libgomp default".
+  static std::string wait_policy();
 
  private:
   int threads_ = 1;

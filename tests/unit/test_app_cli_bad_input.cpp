@@ -397,6 +397,17 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
     EXPECT_EQ(threads_of("env -u OMP_NUM_THREADS taskset -c 0", ""), 1);
   }
   EXPECT_GE(threads_of("env OMP_NUM_THREADS=junk", ""), 1);  // ignored, not fatal
+  // Waiting threads sleep unless the user chose a libgomp policy (core/parallel.h).
+  auto policy = [&](const std::string& prefix) {
+    EXPECT_GE(threads_of(prefix, ""), 1);
+    const std::string s = slurp(work() / "out" / "summary.json");
+    const std::size_t at = s.find("\"thread_wait_policy\": \"");
+    return at == std::string::npos ? std::string("?")
+                                   : s.substr(at + 23, s.find('"', at + 23) - at - 23);
+  };
+  EXPECT_EQ(policy("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT"), "OMP_WAIT_POLICY=passive");
+  EXPECT_EQ(policy("env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=5000"), "GOMP_SPINCOUNT=5000");
+  EXPECT_EQ(policy("env OMP_WAIT_POLICY=active"), "OMP_WAIT_POLICY=active");
 }
 
 // An elastic body too small to have a finite-particle neighbour set (one particle) is bad
