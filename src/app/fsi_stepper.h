@@ -89,6 +89,19 @@ class FsiStepper {
   const FsiSystem& system() const { return sys_; }
   FsiSystem& system() { return sys_; }
   const InteractionLists& lists() const { return *lists_; }
+  InteractionLists& lists() { return *lists_; }
+
+  // The stepper's own state besides the particle sets (checkpoints, app/checkpoint.h):
+  // f(name, value&) per counter; the body loads of the last evaluation through
+  // body_loads()/restore_loads(). The step limit is recomputed by every step.
+  template <class Self, class F>
+  static void visit_state(Self& s, F&& f) {
+    f("time", s.time_);
+    f("steps", s.steps_);
+    f("solid_substeps", s.solid_substeps_);
+    f("leaked_particles", s.leaked_);
+  }
+  void restore_loads(std::vector<BodyLoad> loads) { loads_ = std::move(loads); }
 
  private:
   void evaluate_rates();

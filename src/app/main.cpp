@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "app/checkpoint.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
@@ -101,6 +102,26 @@ int run_or_check(const std::string& cmd, Request& req) {
   return code;
 }
 
+// `slamsph resume OUT`: the case as the run resolved it, continued from its newest
+// checkpoint (app/checkpoint.h) in the same folder.
+int resume_run(Request& req) {
+  const std::string dir = req.out_dir;
+  CaseConfig cfg = load_case(dir + "/case.resolved.toml");
+  RunOptions& opt = req.run;
+  opt.out_dir = dir;
+  opt.write_output = true;
+  const std::string checkpoint = latest_checkpoint(dir);
+  Simulation sim(std::move(cfg), opt);
+  sim.resume_from(checkpoint);
+  if (!opt.quiet) std::fprintf(stderr, "resuming from %s\n", checkpoint.c_str());
+  const int code = sim.run();
+  if (code == 0 && !sim.config().output.plot.empty()) {
+    const int pc = plot_command(opt.out_dir, opt.quiet);
+    if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
+  }
+  return code;
+}
+
 int dispatch(int argc, char** argv) {
   Request req;
   CLI::App app("slamsph " SLAMSPH_VERSION
@@ -133,6 +154,12 @@ int dispatch(int argc, char** argv) {
                   "completed (default: no limit)")
       ->check(CLI::Range(0L, 1000000000000000L))
       ->type_name("N");
+  run->add_option("--checkpoint-interval", req.run.checkpoint_interval,
+                  "Write a checkpoint every T s of simulated time, and at the end, to "
+                  "OUT/checkpoints (the last two are kept; continue with 'slamsph resume "
+                  "OUT'; default: none)")
+      ->check(kPositiveFinite)
+      ->type_name("T");
   run->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
   run->add_flag("--no-output", req.no_output,
                 "Write no files (benchmarks); default: write everything");
@@ -140,6 +167,23 @@ int dispatch(int argc, char** argv) {
   CLI::App* check = app.add_subcommand(
       "check", "Validate a case, build its particles and print their counts; no time step");
   add_case_options(*check, req);
+
+  CLI::App* resume = app.add_subcommand(
+      "resume",
+      "Continue a run in place from its newest checkpoint (see run --checkpoint-interval)");
+  resume->add_option("dir", req.out_dir, "The run's output folder")->required()->type_name("OUT");
+  resume
+      ->add_option("--end-time", req.run.end_time,
+                   "Simulated end time in s (default: the end time of the run)")
+      ->check(kPositiveFinite)
+      ->type_name("T");
+  resume
+      ->add_option("-t,--threads", req.run.threads,
+                   "Threads (results do not depend on it; default as for run: " +
+                       thread_default_text() + ")")
+      ->check(CLI::Range(1, Executor::kMaxThreads))
+      ->type_name("N");
+  resume->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
 
   CLI::App* plot = app.add_subcommand("plot", "Redraw the PNG plots of a run from its folder");
   plot->add_option("dir", req.out_dir, "A results folder (holding case.resolved.toml)")
@@ -153,9 +197,11 @@ int dispatch(int argc, char** argv) {
   // call it a missing subcommand).
   if (argc > 1 && argv[1][0] != '-') {
     const std::string first = argv[1];
-    if (first != "run" && first != "check" && first != "plot" && first != "help") {
+    if (first != "run" && first != "check" && first != "plot" && first != "help" &&
+        first != "resume") {
       std::fprintf(stderr,
-                   "error: command line: unknown command '%s'; expected run, check, plot or help\n",
+                   "error: command line: unknown command '%s'; expected run, resume, check, plot "
+                   "or help\n",
                    argv[1]);
       return 2;
     }
@@ -178,7 +224,7 @@ int dispatch(int argc, char** argv) {
     std::string what = e.what();
     if (what.empty()) what = e.get_name();
     const CLI::App* sub = nullptr;
-    for (const CLI::App* s : {run, check, plot, help})
+    for (const CLI::App* s : {run, resume, check, plot, help})
       if (s->parsed()) sub = s;
     std::fprintf(stderr, "error: command line: %s (see 'slamsph %s--help')\n", what.c_str(),
                  sub ? (sub->get_name() + " ").c_str() : "");
@@ -191,7 +237,7 @@ int dispatch(int argc, char** argv) {
       std::cout << app.get_formatter()->make_help(&app, "slamsph", CLI::AppFormatMode::Normal);
       return 0;
     }
-    for (CLI::App* s : {run, check, plot})
+    for (CLI::App* s : {run, resume, check, plot})
       if (s->get_name() == req.help_topic) {
         std::cout << s->help("slamsph");
         return 0;
@@ -201,6 +247,7 @@ int dispatch(int argc, char** argv) {
     return 2;
   }
   if (plot->parsed()) return plot_command(req.out_dir);
+  if (resume->parsed()) return resume_run(req);
   return run_or_check(run->parsed() ? "run" : "check", req);
 }
 

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "app/validation_report.h"
+#include "core/error.h"
 #include "core/parallel.h"
 #include "io/case_file.h"
 #include "io/csv_writer.h"
@@ -29,15 +30,29 @@ Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiSteppe
 
 Recorder::~Recorder() = default;
 
-void Recorder::start() {
+void Recorder::start(const RecorderResume* resume) {
   const std::vector<SolidBody>& bodies = st_.system().bodies;
+  // A resumed run continues each file from its size at the checkpoint.
+  auto csv = [&](const std::string& name, const std::vector<std::string>& headers) {
+    const std::string path = opt_.out_dir + "/" + name;
+    if (!resume) return std::make_unique<CsvWriter>(path, headers);
+    for (const CsvResume& c : resume->csv)
+      if (c.name == name)
+        return std::make_unique<CsvWriter>(path, headers, CsvWriter::Resume{c.bytes, c.rows});
+    throw InputError("checkpoint has no state for " + path);
+  };
   if (opt_.write_output) {
     const std::string& dir = opt_.out_dir;
     std::filesystem::create_directories(dir);
-    std::ofstream(dir + "/case.resolved.toml") << resolved_case_toml(cfg_);
-    if (cfg_.output.vtk)
-      vtk_ = std::make_unique<VtkSeries>(dir, VtkOptions{cfg_.output.vtk_precision == "float64",
-                                                         cfg_.output.vtk_compression == "zlib"});
+    CaseConfig resolved = cfg_;  // a resumed run keeps the first run's --set notes
+    if (resume) resolved.overrides = resume->case_overrides;
+    std::ofstream(dir + "/case.resolved.toml") << resolved_case_toml(resolved);
+    const VtkOptions vo{cfg_.output.vtk_precision == "float64",
+                        cfg_.output.vtk_compression == "zlib"};
+    if (cfg_.output.vtk && resume && resume->vtk)
+      vtk_ = std::make_unique<VtkSeries>(dir, vo, *resume->vtk);
+    else if (cfg_.output.vtk)
+      vtk_ = std::make_unique<VtkSeries>(dir, vo);
     if (!bodies.empty()) {
       std::vector<std::string> h{"time [s]"};
       for (const SolidBody& b : bodies) {
@@ -48,7 +63,7 @@ void Recorder::start() {
         h.push_back(b.name + " Fx_viscous [N/m]");
         h.push_back(b.name + " Fy_viscous [N/m]");
       }
-      forces_ = std::make_unique<CsvWriter>(dir + "/forces.csv", h);
+      forces_ = csv("forces.csv", h);
       std::vector<std::string> hb{"time [s]"};
       for (const SolidBody& b : bodies) {
         for (const char* q : {"com_x [m]", "com_y [m]", "vel_x [m/s]", "vel_y [m/s]",
@@ -56,15 +71,30 @@ void Recorder::start() {
                               "dissipated [J/m]", "hourglass [J/m]"})
           hb.push_back(b.name + " " + q);
       }
-      bodies_csv_ = std::make_unique<CsvWriter>(dir + "/bodies.csv", hb);
+      bodies_csv_ = csv("bodies.csv", hb);
     }
     std::vector<std::string> hp{"time [s]"};
     for (const std::string& s : probes_.headers()) hp.push_back(s);
     hp.push_back("leaked_particles [-]");
-    probes_csv_ = std::make_unique<CsvWriter>(dir + "/probes.csv", hp);
+    probes_csv_ = csv("probes.csv", hp);
   }
   prev_loads_ = st_.body_loads();
-  record_loads(0.0);
+  if (!resume) record_loads(0.0);  // a resumed run has this row already
+}
+
+std::vector<CsvResume> Recorder::csv_state() const {
+  std::vector<CsvResume> out;
+  for (const CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get()}) {
+    if (!w) continue;
+    const std::string name = std::filesystem::path(w->path()).filename().string();
+    out.push_back({name, std::filesystem::file_size(w->path()), w->rows_written()});
+  }
+  return out;
+}
+
+std::optional<VtkSeries::State> Recorder::vtk_state() const {
+  if (!vtk_) return std::nullopt;
+  return vtk_->state();
 }
 
 void Recorder::record_loads(double dt_prev) {
@@ -193,7 +223,7 @@ void Recorder::flush() {
 void Recorder::write_summary(const RunStatus& status,
                              const std::vector<std::string>& warnings) const {
   const FsiSystem& sys = st_.system();
-  const double wall = status.wall_seconds;
+  const double wall = wall_before_ + status.wall_seconds;
   JsonObject summary;
   summary.set("case", cfg_.name);
   summary.set("version", std::string(SLAMSPH_VERSION));
@@ -207,7 +237,7 @@ void Recorder::write_summary(const RunStatus& status,
   summary.set("solid_substeps", st_.solid_substeps());
   summary.set("dual_time_stepping", cfg_.numerics.dual_time_stepping);
   summary.set("end_time_reached", st_.time());
-  summary.set("wall_seconds", wall);
+  summary.set("wall_seconds", wall);  // the whole run, resumed segments included
   const double ps = wall > 0.0 ? double(sys.fluid.size()) * double(st_.steps()) / wall : 0.0;
   summary.set("fluid_particle_steps_per_second", ps);
   summary.set("threads", exec_.threads());

@@ -7,7 +7,9 @@
 // time), then FsiStepper::step(), then after_step() (forces.csv row, peak, impulse by the
 // trapezoid rule over the step).
 #pragma once
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,12 +17,26 @@
 #include "app/probes.h"
 #include "app/run_options.h"
 #include "io/case_config.h"
+#include "io/vtk_writer.h"
 
 namespace slamsph {
 
 class CsvWriter;
 class Executor;
-class VtkSeries;
+
+// A CSV file's state at a checkpoint: its name in the output folder, size and row count.
+struct CsvResume {
+  std::string name;
+  std::uintmax_t bytes = 0;
+  std::size_t rows = 0;
+};
+
+// Where a resumed run continues its output files (app/checkpoint.h).
+struct RecorderResume {
+  std::vector<CsvResume> csv;
+  std::optional<VtkSeries::State> vtk;
+  std::vector<std::string> case_overrides;  // --set notes of the run's case.resolved.toml
+};
 
 struct RunStatus {
   int code = 0;         // 0 completed, 3 diverged
@@ -34,8 +50,9 @@ class Recorder {
            const ProbeSet& probes, const Executor& exec);
   ~Recorder();
 
-  // Creates the output folder and files (if output is on) and records the initial loads.
-  void start();
+  // Creates the output folder and files (if output is on) and records the initial loads;
+  // with `resume`, continues the files of a checkpointed run instead.
+  void start(const RecorderResume* resume = nullptr);
   void before_step();
   void after_step();
   // The final probe and bodies rows and the last VTK frame of a completed run.
@@ -44,6 +61,25 @@ class Recorder {
   void after_divergence();
   void flush();
   void write_summary(const RunStatus& status, const std::vector<std::string>& warnings) const;
+
+  // Checkpoint access (app/checkpoint.h). Call flush() first: the sizes are the files' now.
+  std::vector<CsvResume> csv_state() const;
+  std::optional<VtkSeries::State> vtk_state() const;
+  template <class Self, class F>
+  static void visit_state(Self& s, F&& f) {
+    f("next_vtk_time", s.next_vtk_);
+    f("next_probe_time", s.next_probe_);
+    f("vtk_interval", s.vtk_dt_);
+    f("probe_interval", s.probe_dt_);
+    f("frame_step", s.frame_step_);
+    f("peak_force", s.peak_);
+    f("peak_magnitude", s.peak_mag_);
+    f("peak_time", s.peak_time_);
+    f("impulse", s.impulse_);
+    f("wall_seconds_before", s.wall_before_);
+  }
+  // Wall time of the segments before this one (resumed runs) plus `segment`.
+  double wall_seconds(double segment) const { return wall_before_ + segment; }
 
  private:
   void record_loads(double dt_prev);
@@ -65,6 +101,7 @@ class Recorder {
   std::vector<BodyLoad> prev_loads_;  // loads at the start of the current step
   std::vector<Vec2> peak_, impulse_;  // per body [N/m], [N s/m]
   std::vector<double> peak_mag_, peak_time_;
+  double wall_before_ = 0.0;  // [s] wall time of earlier segments of a resumed run
 };
 
 }  // namespace slamsph

@@ -7,12 +7,13 @@ namespace slamsph {
 
 struct RunOptions {
   std::string out_dir = "results";
-  int threads = 0;                 // 0 = Executor::default_threads()
-  std::optional<double> end_time;  // overrides numerics.end_time
-  std::optional<long> max_steps;   // stop after this many fluid steps
-  std::optional<double> dx;        // fluid spacing override (bodies scale with it)
-  bool quiet = false;              // no progress line, no banner
-  bool write_output = true;        // false: no VTK/CSV (benchmarks)
+  int threads = 0;                   // 0 = Executor::default_threads()
+  std::optional<double> end_time;    // overrides numerics.end_time
+  std::optional<long> max_steps;     // stop after this many fluid steps
+  std::optional<double> dx;          // fluid spacing override (bodies scale with it)
+  bool quiet = false;                // no progress line, no banner
+  bool write_output = true;          // false: no VTK/CSV (benchmarks)
+  double checkpoint_interval = 0.0;  // [s] simulated time between checkpoints; 0 = none
 };
 
 // Options for driving a Simulation from code (tests, benchmarks): silent, no files.

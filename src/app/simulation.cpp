@@ -4,14 +4,34 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/case_builder.h"
+#include "app/checkpoint.h"
 #include "app/recorder.h"
 #include "app/setup_warnings.h"
 #include "core/error.h"
 #include "io/progress_line.h"
 
 namespace slamsph {
+
+namespace {
+
+// VTK frames at and after `frame` (<set>_<frame:05>.vtp) from an interrupted run, which the
+// resumed run rewrites; removed so that none outlives the resumed run.
+void remove_frames_from(const std::string& out_dir, int frame) {
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(out_dir + "/vtk", ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.size() < 10 || n.substr(n.size() - 4) != ".vtp") continue;
+    const std::string digits = n.substr(n.size() - 9, 5);
+    if (n[n.size() - 10] != '_' || digits.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    if (std::stoi(digits) >= frame) std::filesystem::remove(e.path(), ec);
+  }
+}
+
+}  // namespace
 
 Simulation::Simulation(CaseConfig config, const RunOptions& options)
     : cfg_(std::move(config)),
@@ -47,20 +67,44 @@ double Simulation::probe_value(std::size_t k) const {
 
 int Simulation::run() {
   Recorder rec(cfg_, opt_, *stepper_, *probes_, exec_);
-  rec.start();
+  CheckpointSchedule schedule{opt_.checkpoint_interval, opt_.checkpoint_interval};
+  if (!resume_from_.empty()) {
+    const RecorderResume resume =
+        read_checkpoint(resume_from_, cfg_, *stepper_, rec, schedule, exec_);
+    if (resume.vtk) remove_frames_from(opt_.out_dir, resume.vtk->frame);
+    rec.start(&resume);
+  } else {
+    rec.start();
+  }
+  const bool checkpoints = schedule.interval > 0.0 && opt_.write_output;
+  long checkpoint_step = resume_from_.empty() ? -1 : steps();  // step of the last checkpoint
   const double end = cfg_.numerics.end_time;
   const bool show_progress = !opt_.quiet && isatty(STDERR_FILENO);
   ProgressLine progress(end, show_progress);
   const auto t0 = std::chrono::steady_clock::now();
+  auto checkpoint = [&] {
+    rec.flush();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_checkpoint(opt_.out_dir, cfg_, *stepper_, rec, schedule, rec.wall_seconds(wall));
+    checkpoint_step = steps();
+  };
   RunStatus status;
   try {
     while (time() < end * (1.0 - 1e-12)) {
+      // Checkpoints are taken between steps, before the outputs due at this time.
+      if (checkpoints && time() >= schedule.next - 1e-15) {
+        while (schedule.next <= time() + 1e-15) schedule.next += schedule.interval;
+        if (steps() != checkpoint_step) checkpoint();
+      }
       if (opt_.max_steps && steps() >= *opt_.max_steps) break;
       rec.before_step();
       stepper_->step();
       rec.after_step();
       progress.update(time(), steps(), last_step_limit().dt);
     }
+    // The end state, so that the run can be extended (slamsph resume --end-time).
+    if (checkpoints && steps() != checkpoint_step) checkpoint();
     rec.finish();
   } catch (const DivergenceError& e) {
     status.code = 3;

@@ -27,6 +27,9 @@ class Simulation {
   void step() { stepper_->step(); }
   // The whole run with outputs; returns the process exit code (0 ok, 3 diverged).
   int run();
+  // Makes run() continue from a checkpoint of this case (app/checkpoint.h) in place, in
+  // the output folder it was written to. The checkpoint is read and checked by run().
+  void resume_from(std::string checkpoint_path) { resume_from_ = std::move(checkpoint_path); }
 
   double time() const { return stepper_->time(); }
   long steps() const { return stepper_->steps(); }
@@ -53,6 +56,7 @@ class Simulation {
   std::vector<std::string> warnings_;
   std::unique_ptr<FsiStepper> stepper_;
   std::unique_ptr<ProbeSet> probes_;
+  std::string resume_from_;  // checkpoint to continue from ("" = a fresh run)
 };
 
 }  // namespace slamsph

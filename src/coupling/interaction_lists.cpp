@@ -14,21 +14,36 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
         c.size(), [&](std::size_t i) { return norm2(c.x[i] - contact_ref_[i]); }, 0.0);
     if (df < lim2 && dc < lim2) return false;
   }
-  const double r_ff = support_ff_ + skin_;
-  const double r_fc = support_fc_ + skin_;
-  const double cell = std::max(r_ff, r_fc);
   // Reorder the fluid into cell order so neighbours are close in memory.
-  fluid_grid_.build(f.x, cell);
+  fluid_grid_.build(f.x, cell_size());
   f.permute(fluid_grid_.cell_order());
-  fluid_grid_.build(f.x, cell);
-  build_banded_pairs(f.x, fluid_grid_, r_ff, exec, ff_);
-  contact_grid_.build(c.x, cell);
-  build_neighbour_list(f.x, c.x, contact_grid_, r_fc, false, exec, fc_);
-  build_neighbour_list(c.x, f.x, fluid_grid_, r_fc, false, exec, cf_);
-  fluid_ref_ = f.x;
-  contact_ref_ = c.x;
+  build(f.x, c.x, exec);
   ++rebuilds_;
   return true;
+}
+
+double InteractionLists::cell_size() const {
+  return std::max(support_ff_ + skin_, support_fc_ + skin_);
+}
+
+void InteractionLists::build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc,
+                             const Executor& exec) {
+  const double r_ff = support_ff_ + skin_;
+  const double r_fc = support_fc_ + skin_;
+  const double cell = cell_size();
+  fluid_grid_.build(xf, cell);
+  build_banded_pairs(xf, fluid_grid_, r_ff, exec, ff_);
+  contact_grid_.build(xc, cell);
+  build_neighbour_list(xf, xc, contact_grid_, r_fc, false, exec, fc_);
+  build_neighbour_list(xc, xf, fluid_grid_, r_fc, false, exec, cf_);
+  fluid_ref_ = xf;
+  contact_ref_ = xc;
+}
+
+void InteractionLists::restore(std::vector<Vec2> fluid_ref, std::vector<Vec2> contact_ref,
+                               long rebuilds, const Executor& exec) {
+  build(fluid_ref, contact_ref, exec);
+  rebuilds_ = rebuilds;
 }
 
 }  // namespace slamsph

@@ -32,7 +32,19 @@ class InteractionLists {
   // no particle has moved more than skin/2 since.
   const CellGrid& fluid_grid() const { return fluid_grid_; }
 
+  // Positions at the last build (checkpoints): rebuilding from them reproduces the lists
+  // of the last build exactly (same grids, same pair order), without reordering the fluid,
+  // which was already put in cell order by that build.
+  const std::vector<Vec2>& fluid_reference() const { return fluid_ref_; }
+  const std::vector<Vec2>& contact_reference() const { return contact_ref_; }
+  void restore(std::vector<Vec2> fluid_ref, std::vector<Vec2> contact_ref, long rebuilds,
+               const Executor& exec);
+
  private:
+  double cell_size() const;
+  // Grids and lists from fluid positions xf (already in cell order) and contact xc.
+  void build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc, const Executor& exec);
+
   double support_ff_, support_fc_, skin_;
   CellGrid fluid_grid_, contact_grid_;
   BandedPairs ff_;

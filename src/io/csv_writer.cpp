@@ -1,6 +1,8 @@
 // CSV time-series writer and reader; format in csv_writer.h.
 #include "io/csv_writer.h"
 
+#include <filesystem>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -79,9 +81,13 @@ bool csv_header_has_unit(const std::string& header) {
   return open != std::string::npos && open + 2 < h.size();  // at least one char inside
 }
 
+CsvWriter::CsvWriter(std::string path, std::vector<std::string> headers, Resume at)
+    : CsvWriter(std::move(path), std::move(headers), 256, 2.0, at) {}
+
 CsvWriter::CsvWriter(std::string path, std::vector<std::string> headers, std::size_t flush_rows,
-                     double flush_seconds)
-    : path_(std::move(path)),
+                     double flush_seconds, std::optional<Resume> resume)
+    : resume_(resume),
+      path_(std::move(path)),
       headers_(std::move(headers)),
       flush_rows_(flush_rows == 0 ? 1 : flush_rows),
       flush_seconds_(flush_seconds),
@@ -95,6 +101,17 @@ CsvWriter::CsvWriter(std::string path, std::vector<std::string> headers, std::si
       if (headers_[j] == headers_[i])
         throw std::invalid_argument("CsvWriter " + path_ + ": duplicate header '" + headers_[i] +
                                     "'");
+  }
+  if (resume_) {
+    // Continue a file this writer wrote before (resume from a checkpoint): drop what was
+    // written after the checkpoint, then append.
+    std::error_code ec;
+    std::filesystem::resize_file(path_, resume_->bytes, ec);
+    if (ec) throw std::runtime_error("cannot truncate " + path_ + ": " + ec.message());
+    out_.open(path_, std::ios::out | std::ios::app | std::ios::binary);
+    if (!out_) throw std::runtime_error("cannot open " + path_ + " for writing");
+    rows_ = resume_->rows;
+    return;
   }
   out_.open(path_, std::ios::out | std::ios::trunc | std::ios::binary);
   if (!out_) throw std::runtime_error("cannot open " + path_ + " for writing");

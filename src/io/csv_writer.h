@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstddef>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,17 @@ class CsvWriter {
   // Creates (truncates) `path`; its parent directory must exist. Throws
   // std::invalid_argument for a header without "[unit]" or duplicated headers,
   // std::runtime_error if the file cannot be opened.
+  // Where a resumed run continues an existing file: its size and row count at a
+  // checkpoint (taken right after flush()).
+  struct Resume {
+    std::uintmax_t bytes = 0;
+    std::size_t rows = 0;
+  };
   CsvWriter(std::string path, std::vector<std::string> headers, std::size_t flush_rows = 256,
-            double flush_seconds = 2.0);
+            double flush_seconds = 2.0, std::optional<Resume> resume = std::nullopt);
+  // Continues `path` (written by a CsvWriter with the same headers): truncates it to
+  // at.bytes and appends.
+  CsvWriter(std::string path, std::vector<std::string> headers, Resume at);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -38,6 +48,7 @@ class CsvWriter {
   std::size_t rows_written() const { return rows_; }
 
  private:
+  std::optional<Resume> resume_;
   std::string path_;
   std::vector<std::string> headers_;
   std::ofstream out_;

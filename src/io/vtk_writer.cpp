@@ -132,6 +132,14 @@ VtkSeries::VtkSeries(std::string out_dir, VtkOptions options)
   if (ec) throw std::system_error(ec, "cannot create " + out_dir_ + "/vtk");
 }
 
+VtkSeries::VtkSeries(std::string out_dir, VtkOptions options, State state)
+    : VtkSeries(std::move(out_dir), options) {
+  frame_ = state.frame;
+  parts_ = std::move(state.parts);
+  entries_ = std::move(state.entries);
+  write_pvd();
+}
+
 VtkSeries::~VtkSeries() {
   try {
     end_frame();

@@ -72,12 +72,23 @@ class VtkSeries {
   // Path of a set's file for a given frame: <out_dir>/vtk/<set>_<frame:05>.vtp.
   std::string vtp_path(const std::string& set_name, int frame) const;
 
- private:
+  // What a continuation needs (checkpoints): the frame counter and the .pvd index so far.
   struct Entry {
     double time;
     int part;
     std::string file;  // relative to out_dir
   };
+  struct State {
+    int frame = 0;
+    std::vector<std::string> parts;
+    std::vector<Entry> entries;
+  };
+  State state() const { return {frame_, parts_, entries_}; }
+  // Continues a series written before (resume): fields.pvd is rewritten to list exactly
+  // `state`'s entries, and the next frame is state.frame.
+  VtkSeries(std::string out_dir, VtkOptions options, State state);
+
+ private:
   void write_pvd() const;
   int part_of(const std::string& set_name);
 
