@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Command 2 of the README: build everything with warnings as errors and run every test
-# tier (unit, verification, regression), the unit tier again under AddressSanitizer +
+# tier (unit, verification, regression, restart), the unit tier again under AddressSanitizer +
 # UndefinedBehaviorSanitizer, and the clang-format check.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,7 +15,7 @@ cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Release -DSLAMSPH_WERROR=ON >/dev/nu
 cmake --build build-test -j"$jobs"
 
 echo "== tests: unit, verification, regression"
-(cd build-test && ctest --output-on-failure -j"$jobs" -L "unit|verification|regression" --timeout 900)
+(cd build-test && ctest --output-on-failure -j"$jobs" -L "unit|verification|regression|restart" --timeout 900)
 
 echo "== unit tier under ASan + UBSan"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSLAMSPH_WERROR=ON -DSLAMSPH_SANITIZE=ON \
