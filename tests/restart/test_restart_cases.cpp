@@ -33,6 +33,11 @@ struct RestartCase {
   const char* interval;  // output.interval [s]
 };
 
+// gtest prints the parameter by name.
+void PrintTo(const RestartCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
 const RestartCase kCases[] = {
     {"elastic_cylinder_entry", "0.01", 0.012, "0.0015"},
     {"elastic_gate", "0.002", 0.016, "0.002"},
