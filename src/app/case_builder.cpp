@@ -92,7 +92,7 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   s.gravity = bc.gravity;
   s.velocity = bc.velocity;
   s.angular_velocity = bc.angular_velocity;
-  s.clamp_box = bc.clamp.box;
+  s.clamp_boxes = bc.clamp.boxes;
   s.clamp_layers = bc.clamp.layers;
   for (const MotionPoint& p : bc.motion) s.motion.push_back({p.t, p.v});
   s.mass = bc.mass;
@@ -108,7 +108,9 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
       ElasticMaterialInput{mat->name,          mat->model,    mat->density, mat->youngs_modulus,
                            mat->poisson_ratio, mat->av_alpha, mat->av_beta, mat->hourglass};
   if (bc.initial_profile == "cantilever_mode") {
-    const double clamp_edge = bc.clamp.box ? bc.clamp.box->max.x : bc.shape.box.min.x;
+    // The parser requires exactly one clamp box with a cantilever mode.
+    const double clamp_edge =
+        bc.clamp.boxes.empty() ? bc.shape.box.min.x : bc.clamp.boxes.front().max.x;
     s.cantilever_mode =
         CantileverModeInput{clamp_edge, bc.shape.box.max.x - clamp_edge, bc.mode_vf};
   } else if (!bc.initial_profile.empty()) {

@@ -28,7 +28,8 @@ PlotParams plot_params_for(const CaseConfig& cfg) {
     if (b.initial_profile == "cantilever_mode") {
       if (const MaterialConfig* m = cfg.find_material(b.material)) {
         const double L = b.shape.box.max.x - b.shape.box.min.x;
-        const double clamp = b.clamp.box ? b.clamp.box->max.x - b.shape.box.min.x : 0.0;
+        const double clamp =
+            b.clamp.boxes.empty() ? 0.0 : b.clamp.boxes.front().max.x - b.shape.box.min.x;
         const double H = b.shape.box.max.y - b.shape.box.min.y;
         p.plate_omega =
             cantilever_omega(m->youngs_modulus, m->density, m->poisson_ratio, H, L - clamp);

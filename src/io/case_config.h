@@ -57,7 +57,9 @@ struct MaterialConfig {
 };
 
 struct ClampConfig {
-  std::optional<Box> box;   // particles inside are held fixed
+  // Particles inside any box are held fixed. `box = {...}` in the case gives one box,
+  // `boxes = [{...}, ...]` several (e.g. a plate clamped at both ends).
+  std::vector<Box> boxes;
   std::vector<int> layers;  // ring layers held fixed (0 = innermost)
 };
 

@@ -358,11 +358,21 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
           "no mode_vf, or initial_profile = 'cantilever_mode'");
   }
 
-  if (auto cl = r.table("clamp", "a [body.clamp] table with box and/or layers")) {
-    cl->allow({"box", "layers"});
+  if (auto cl = r.table("clamp", "a [body.clamp] table with box, boxes and/or layers")) {
+    cl->allow({"box", "boxes", "layers"});
     if (auto bx = cl->table("box", "an inline table {min = [x, y], max = [x, y]}")) {
       bx->allow({"min", "max"});
-      b.clamp.box = read_box(*bx);
+      b.clamp.boxes.push_back(read_box(*bx));
+      if (cl->has("boxes"))
+        cl->bad("boxes", "give either box (one region) or boxes (a list), not both",
+                "boxes = [{min = [x, y], max = [x, y]}, ...] alone");
+    }
+    const std::string list = "an array of inline tables [{min = [x, y], max = [x, y]}, ...]";
+    const std::vector<Reader> bxs = cl->table_array("boxes", list);
+    if (cl->has("boxes") && bxs.empty()) cl->bad("boxes", "empty list", list);
+    for (const Reader& bx : bxs) {
+      bx.allow({"min", "max"});
+      b.clamp.boxes.push_back(read_box(bx));
     }
     if (auto ls = cl->int_list("layers", "an array of ring layer indices")) {
       if (b.shape.type != "ring")
@@ -380,9 +390,10 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
       }
     }
   }
-  if (b.initial_profile == "cantilever_mode" && !b.clamp.box)
-    r.bad("initial_profile", "cantilever_mode needs a clamped end",
-          "a [body.clamp] table with box = {min, max}");
+  if (b.initial_profile == "cantilever_mode" && b.clamp.boxes.size() != 1)
+    r.bad("initial_profile", "cantilever_mode needs exactly one clamped end",
+          "a [body.clamp] table with box = {min, max}",
+          std::to_string(b.clamp.boxes.size()) + " clamp boxes");
 
   if (b.kind == "rigid_prescribed") {
     const std::string e = "rows [t, vx, vy] (s, m/s) with increasing t >= 0";

@@ -165,11 +165,18 @@ std::string resolved_case_toml(const CaseConfig& c) {
       for (std::size_t i = 0; i < s.vertices.size(); ++i) o << (i ? ", " : "") << v2(s.vertices[i]);
       o << "]  # [m]\n";
     }
-    if (bd.kind == "elastic" && (bd.clamp.box || !bd.clamp.layers.empty())) {
+    if (bd.kind == "elastic" && (!bd.clamp.boxes.empty() || !bd.clamp.layers.empty())) {
       o << "\n[body.clamp]\n";
-      if (bd.clamp.box)
-        o << "box = {min = " << v2(bd.clamp.box->min) << ", max = " << v2(bd.clamp.box->max)
-          << "}  # [m]\n";
+      const auto box_text = [&](const Box& bx) {
+        return "{min = " + v2(bx.min) + ", max = " + v2(bx.max) + "}";
+      };
+      if (bd.clamp.boxes.size() == 1) o << "box = " << box_text(bd.clamp.boxes[0]) << "  # [m]\n";
+      if (bd.clamp.boxes.size() > 1) {
+        o << "boxes = [";
+        for (std::size_t i = 0; i < bd.clamp.boxes.size(); ++i)
+          o << (i ? ", " : "") << box_text(bd.clamp.boxes[i]);
+        o << "]  # [m]\n";
+      }
       if (!bd.clamp.layers.empty()) {
         o << "layers = [";
         for (std::size_t i = 0; i < bd.clamp.layers.size(); ++i)

@@ -133,7 +133,8 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   // Clamps.
   body.clamped.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (cfg.clamp_box && inside(*cfg.clamp_box, body.X[i])) body.clamped[i] = 1;
+    for (const Box& bx : cfg.clamp_boxes)
+      if (inside(bx, body.X[i])) body.clamped[i] = 1;
     for (int l : cfg.clamp_layers)
       if (body.layer[i] == l) body.clamped[i] = 1;
   }

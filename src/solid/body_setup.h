@@ -46,7 +46,7 @@ struct BodySetup {
   bool gravity = true;            // the body feels gravity
   Vec2 velocity;                  // initial velocity [m/s]
   double angular_velocity = 0.0;  // initial angular velocity about the centre of mass [rad/s]
-  std::optional<Box> clamp_box;   // particles inside are held fixed
+  std::vector<Box> clamp_boxes;   // particles inside any box are held fixed
   std::vector<int> clamp_layers;  // ring layers held fixed (0 = innermost)
   std::optional<CantileverModeInput> cantilever_mode;  // elastic only
   std::vector<PrescribedVelocity> motion;              // rigid_prescribed velocity table

@@ -211,6 +211,21 @@ TEST(IoCaseErrors, BoxMinNotBelowMax) {
   expect_error(d, line_of(d, "max = [-1.0"), "numerics.domain.max", "must exceed min");
 }
 
+TEST(IoCaseErrors, ClampBoxAndBoxesTogether) {
+  const std::string one = "radius = 0.1\n[body.clamp]\nbox = {min = [0.4, 0.6], max = [0.6, 0.65]}";
+  const std::string t = replace_line(kBase, "radius = 0.1",
+                                     one + "\nboxes = [{min = [0.4, 0.75], max = [0.6, 0.8]}]");
+  expect_error(t, line_of(t, "boxes ="), "body[1].clamp.boxes", "not both");
+  const std::string e =
+      replace_line(kBase, "radius = 0.1", "radius = 0.1\n[body.clamp]\nboxes = []");
+  expect_error(e, line_of(e, "boxes ="), "body[1].clamp.boxes", "empty list");
+  const std::string b =
+      replace_line(kBase, "radius = 0.1",
+                   "radius = 0.1\n[body.clamp]\nboxes = [{min = [0.4, 0.6], max = [0.6, 0.65]}, "
+                   "{min = [0.4, 0.8], max = [0.3, 0.9]}]");
+  expect_error(b, line_of(b, "boxes ="), "body[1].clamp.boxes[1].max", "must exceed min");
+}
+
 TEST(IoCaseErrors, BodyShapeOutsideDomain) {
   const std::string t = replace_line(kBase, "centre = [0.5, 0.7]", "centre = [1.95, 0.7]");
   expect_error(t, line_of(t, "[body.shape]", 2), "body[1].shape", "body 'cyl'");

@@ -262,8 +262,8 @@ TEST(IoCaseParse, FullCaseValues) {
   EXPECT_EQ(plate.initial_profile, "cantilever_mode");
   EXPECT_DOUBLE_EQ(plate.mode_vf, 0.05);
   EXPECT_FALSE(plate.gravity);
-  ASSERT_TRUE(plate.clamp.box.has_value());
-  expect_vec(plate.clamp.box->max, {0.62, 0.72});
+  ASSERT_EQ(plate.clamp.boxes.size(), 1u);
+  expect_vec(plate.clamp.boxes[0].max, {0.62, 0.72});
 
   const BodyConfig& skin = c.bodies[4];
   EXPECT_EQ(skin.shape.layers, 2);  // default round(0.01 / 0.005)

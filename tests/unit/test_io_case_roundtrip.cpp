@@ -89,9 +89,9 @@ void expect_equal(const CaseConfig& a, const CaseConfig& b) {
       EXPECT_SAME(p.motion[k].t, q.motion[k].t);
       EXPECT_SAME(p.motion[k].v, q.motion[k].v);
     }
-    EXPECT_EQ(p.clamp.box.has_value(), q.clamp.box.has_value());
-    if (p.clamp.box && q.clamp.box) {
-      EXPECT_SAME(*p.clamp.box, *q.clamp.box);
+    EXPECT_EQ(p.clamp.boxes.size(), q.clamp.boxes.size());
+    for (std::size_t k = 0; k < std::min(p.clamp.boxes.size(), q.clamp.boxes.size()); ++k) {
+      EXPECT_SAME(p.clamp.boxes[k], q.clamp.boxes[k]);
     }
     EXPECT_EQ(p.clamp.layers, q.clamp.layers);
     const ShapeConfig &s = p.shape, &t = q.shape;
@@ -172,6 +172,15 @@ motion = [[0, 0.1, 0], [0.05, 0.2, 0.1]]
 [body.shape]
 type = "polygon"
 vertices = [[0.1, 1.5], [0.2, 1.5], [0.15, 1.6]]
+[[body]]
+name = "bridge"
+material = "al 2024"
+[body.shape]
+type = "rectangle"
+min = [0.4, 1.7]
+max = [0.7, 1.72]
+[body.clamp]
+boxes = [{min = [0.4, 1.7], max = [0.42, 1.72]}, {min = [0.68, 1.7], max = [0.7, 1.72]}]
 [[body]]
 name = "free"
 kind = "rigid_free"

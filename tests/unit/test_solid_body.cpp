@@ -42,7 +42,7 @@ SolidBody rigid_body(const std::string& kind, BodySetup cfg = {}) {
 TEST(SolidBodySetup, ClampsAndCantileverMode) {
   const double H = 0.02, L = 0.2, clamp = 0.06;
   BodySetup cfg;
-  cfg.clamp_box = Box{{-1.0, -1.0}, {0.0, 1.0}};
+  cfg.clamp_boxes = {Box{{-1.0, -1.0}, {0.0, 1.0}}};
   cfg.cantilever_mode = CantileverModeInput{0.0, L, 0.01};
   const int nx = static_cast<int>(std::lround((L + clamp) / kDx));
   SolidBody b =
@@ -82,7 +82,7 @@ TEST(SolidBodySetup, StableStepAndSubSteps) {
 
 TEST(SolidBodySetup, ClampedParticlesStayPut) {
   BodySetup cfg;
-  cfg.clamp_box = Box{{-1, -1}, {2 * kDx, 1}};
+  cfg.clamp_boxes = {Box{{-1, -1}, {2 * kDx, 1}}};
   SolidBody b = make_body(box_lattice(12, 4, kDx), kDx, "tl_sfpm", plate_material(), cfg);
   for (Vec2& f : b.f_fluid) f = {0.0, -50.0};
   advance_body(b, 0.0, 20 * stable_time_step(b), {0.0, -9.81}, kExec);

@@ -41,7 +41,7 @@ PlateResult run_plate(const char* scheme, int layers, double hourglass, double a
   const int nx = static_cast<int>(std::lround((L + clamp) / dx));
   const ElasticMaterialInput mat = plate_material(hourglass, av_alpha);
   BodySetup cfg;
-  cfg.clamp_box = Box{{-clamp - dx, -H}, {0.0, H}};
+  cfg.clamp_boxes = {Box{{-clamp - dx, -H}, {0.0, H}}};
   cfg.cantilever_mode = CantileverModeInput{0.0, L, 0.01};  // clamp edge at x = 0
   cfg.gravity = false;
   SolidBody b = make_body(box_lattice(nx, layers, dx, {-clamp, -H / 2}), dx, scheme, mat, cfg);
