@@ -2,11 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numbers>
 #include <stdexcept>
-
-#include "core/cell_grid.h"
 
 namespace slamsph {
 
@@ -29,134 +25,23 @@ double polygon_area(const std::vector<Vec2>& v) {
   return 0.5 * std::abs(s);
 }
 
-double polygon_boundary_distance(Vec2 p, const std::vector<Vec2>& v) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-    const Vec2 e = v[i] - v[j];
-    const double s = std::clamp(dot(p - v[j], e) / norm2(e), 0.0, 1.0);
-    best = std::min(best, norm(p - (v[j] + s * e)));
-  }
-  return best;
-}
-
-namespace {
-
-double signed_area(const std::vector<Vec2>& v) {
-  double s = 0.0;
-  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) s += cross(v[j], v[i]);
-  return 0.5 * s;
-}
-
-// Face layers (header, step 1) of a counter-clockwise polygon.
-void face_layers(const std::vector<Vec2>& v, double dx, int layers, ParticleLattice& out) {
-  const std::size_t n = v.size();
-  const double eps = 1e-9 * dx;
-  auto tangent = [&](std::size_t i) {
-    return (v[(i + 1) % n] - v[i]) / norm(v[(i + 1) % n] - v[i]);
-  };
-  auto inward = [](Vec2 t) { return Vec2{-t.y, t.x}; };  // left of a CCW edge
-  // Interior angle at vertex i (between edge i−1 and edge i), in (0, 2π).
-  auto interior_angle = [&](std::size_t i) {
-    const Vec2 a = tangent((i + n - 1) % n), b = tangent(i);
-    return std::numbers::pi - std::atan2(cross(a, b), dot(a, b));
-  };
-  for (int k = 0; k < layers; ++k) {
-    const double d = (k + 0.5) * dx;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = v[i], b = v[(i + 1) % n], t = tangent(i), nn = inward(t);
-      const double len = norm(b - a);
-      const double th0 = interior_angle(i), th1 = interior_angle((i + 1) % n);
-      const double t0 = th0 < std::numbers::pi ? d / std::tan(0.5 * th0) : 0.0;
-      const double t1 = th1 < std::numbers::pi ? d / std::tan(0.5 * th1) : 0.0;
-      const double ell = len - t0 - t1;
-      const long m = ell > 0.0 ? std::lround(ell / dx) : 0;
-      const std::size_t first = out.size();
-      for (long j = 0; j < m; ++j) {
-        const Vec2 p = a + (t0 + (j + 0.5) * ell / m) * t + d * nn;
-        if (polygon_boundary_distance(p, v) < d - eps) continue;  // another face is nearer
-        out.add(p, ell / m * dx, k);
-      }
-      // Reflex sector at the edge's end vertex b (between this edge's and the next one's
-      // normals), centred on b with radius d.
-      if (th1 > std::numbers::pi + 1e-12) {
-        const double phi = th1 - std::numbers::pi;
-        const double sector = phi * (k + 0.5) * dx * dx;
-        const long ms = std::lround(phi * (k + 0.5));
-        const double a0 = std::atan2(nn.y, nn.x);  // rotate clockwise from this edge's normal
-        if (ms > 0) {
-          for (long j = 0; j < ms; ++j) {
-            const double ang = a0 - (j + 0.5) * phi / ms;
-            const Vec2 p = b + d * Vec2{std::cos(ang), std::sin(ang)};
-            if (polygon_boundary_distance(p, v) < d - eps) continue;
-            out.add(p, sector / ms, k);
-          }
-        } else if (out.size() > first) {
-          out.volume.back() += sector;  // this edge's last particle (else: the residual)
-        }
-      }
-    }
-  }
-}
-
-}  // namespace
-
-ParticleLattice polygon(const std::vector<Vec2>& vertices, double dx, int face_layers_count) {
+ParticleLattice polygon(const std::vector<Vec2>& vertices, double dx) {
   if (vertices.size() < 3) throw std::invalid_argument("polygon: need at least 3 vertices");
   if (!(dx > 0.0)) throw std::invalid_argument("polygon: dx must be > 0");
-  if (face_layers_count < 1) throw std::invalid_argument("polygon: face_layers must be >= 1");
-  const double area = polygon_area(vertices);
-  if (!(area > 0.0)) throw std::invalid_argument("polygon: zero area");
-  std::vector<Vec2> v = vertices;
-  if (signed_area(v) < 0.0) std::reverse(v.begin(), v.end());
-
-  ParticleLattice laid;
-  face_layers(v, dx, face_layers_count, laid);
-
-  // Interior lattice (header, step 2).
-  Vec2 lo = v[0], hi = v[0];
-  for (const Vec2& p : v) {
+  Vec2 lo = vertices[0], hi = vertices[0];
+  for (const Vec2& p : vertices) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
   const long nx = std::lround(std::ceil((hi.x - lo.x) / dx - 1e-9));
   const long ny = std::lround(std::ceil((hi.y - lo.y) / dx - 1e-9));
-  const double inner = face_layers_count * dx - 1e-9 * dx;
-  std::vector<Vec2> interior;
+  ParticleLattice out;
   for (long j = 0; j < ny; ++j)
     for (long i = 0; i < nx; ++i) {
       const Vec2 p{lo.x + (static_cast<double>(i) + 0.5) * dx,
                    lo.y + (static_cast<double>(j) + 0.5) * dx};
-      if (point_in_polygon(p, v) && polygon_boundary_distance(p, v) >= inner) interior.push_back(p);
+      if (point_in_polygon(p, vertices)) out.add(p, dx * dx);
     }
-  const double residual = area - laid.total_volume();
-  if (!interior.empty()) {
-    for (const Vec2& p : interior) laid.add(p, residual / interior.size(), -1);
-  } else if (laid.size() > 0) {
-    const double s = area / laid.total_volume();
-    for (double& vol : laid.volume) vol *= s;
-  }
-
-  // Clean-up (header, step 3): merge particles closer than dx/2 into the earlier one.
-  ParticleLattice out;
-  CellGrid grid;
-  grid.build(laid.x, 0.5 * dx);
-  std::vector<std::size_t> owner(laid.size());
-  for (std::size_t i = 0; i < laid.size(); ++i) owner[i] = i;
-  const double r2 = 0.25 * dx * dx;
-  for (std::size_t i = 0; i < laid.size(); ++i) {
-    if (owner[i] != i) continue;
-    grid.for_each_candidate(laid.x[i], [&](std::uint32_t j) {
-      if (j > i && owner[j] == j && norm2(laid.x[j] - laid.x[i]) < r2) owner[j] = i;
-    });
-  }
-  std::vector<std::size_t> slot(laid.size());
-  for (std::size_t i = 0; i < laid.size(); ++i)
-    if (owner[i] == i) {
-      slot[i] = out.size();
-      out.add(laid.x[i], laid.volume[i], laid.layer[i]);
-    }
-  for (std::size_t i = 0; i < laid.size(); ++i)
-    if (owner[i] != i) out.volume[slot[owner[i]]] += laid.volume[i];
   return out;
 }
 
