@@ -43,7 +43,7 @@ SolidBody build_body(const CaseConfig& cfg, std::size_t index) {
   } catch (const InputError& e) {
     // Setup finds what the parser cannot (e.g. a shape too small for its spacing): name
     // the file and the key like the parser does.
-    throw InputError(body_key(cfg, index, "shape") + ": " + e.what() +
+    throw InputError(cfg.where("body[" + std::to_string(index) + "].shape") + ": " + e.what() +
                      "; expected a shape several particle " +
                      "spacings across (dx = " + std::to_string(body.dx) + " m)");
   }

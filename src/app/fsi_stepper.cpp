@@ -129,9 +129,12 @@ void FsiStepper::check_state() const {
         continue;
       std::ostringstream os;
       os << "body '" << b.name << "' particle " << i << " at t = " << time_ << " s: "
-         << (std::isfinite(x.x) && std::isfinite(x.y) ? "left the domain"
-                                                      : "position/velocity is not finite")
-         << "; last step " << limit_.dt << " s limited by " << describe_limit();
+         << (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(b.v[i].x) &&
+                     std::isfinite(b.v[i].y)
+                 ? "left the domain"
+                 : "position/velocity is not finite")
+         << " at (" << x.x << ", " << x.y << ") m with velocity (" << b.v[i].x << ", " << b.v[i].y
+         << ") m/s; last step " << limit_.dt << " s limited by " << describe_limit();
       throw DivergenceError(os.str());
     }
   }

@@ -65,6 +65,12 @@ void add_case_options(CLI::App& sub, Request& req) {
       ->type_name("KEY=VALUE")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->allow_extra_args(false);
+  sub.add_option("--max-particles", req.run.max_particles,
+                 "Refuse a case estimated to have more particles than this (about 1 kB of "
+                 "memory each)")
+      ->check(kPositiveFinite)
+      ->capture_default_str()
+      ->type_name("N");
   sub.add_option("--dx", req.dx,
                  "Fluid particle spacing in m; bodies keep their spacing relative to the "
                  "water (default: numerics.dx of the case)")
@@ -83,7 +89,9 @@ int run_or_check(const std::string& cmd, Request& req) {
     for (const std::string& w : sim.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   };
   if (cmd == "check") {
-    Simulation sim(std::move(cfg), silent_options(1));
+    RunOptions check_opt = silent_options(1);
+    check_opt.max_particles = opt.max_particles;
+    Simulation sim(std::move(cfg), check_opt);
     warn(sim);
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());

@@ -14,6 +14,7 @@ struct RunOptions {
   bool quiet = false;                // no progress line, no banner
   bool write_output = true;          // false: no VTK/CSV (benchmarks)
   double checkpoint_interval = 0.0;  // [s] simulated time between checkpoints; 0 = none
+  double max_particles = 1e7;        // refuse a case estimated above this (app/case_checks.h)
 };
 
 // Options for driving a Simulation from code (tests, benchmarks): silent, no files.

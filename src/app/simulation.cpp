@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "app/case_builder.h"
+#include "app/case_checks.h"
 #include "app/checkpoint.h"
 #include "app/recorder.h"
 #include "app/setup_warnings.h"
@@ -39,7 +40,9 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
       exec_(options.threads > 0 ? options.threads : Executor::default_threads()) {
   if (opt_.end_time) cfg_.numerics.end_time = *opt_.end_time;
   warnings_ = setup_warnings(cfg_);
+  check_case_size(cfg_, opt_.max_particles);
   BuiltCase built = build_case(cfg_);
+  check_built_case(cfg_, built.system);
   stepper_ = std::make_unique<FsiStepper>(built.params, std::move(built.system), exec_);
   probes_ = std::make_unique<ProbeSet>(cfg_.output.probes, bodies(), cfg_.numerics.dx);
 }

@@ -3,6 +3,7 @@
 // case.resolved.toml. docs/case_format.md documents every key; SI units throughout.
 #pragma once
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -121,11 +122,26 @@ struct CaseConfig {
   std::string name;
   std::string source_path;             // the file it came from (for messages)
   std::vector<std::string> overrides;  // command-line "KEY=VALUE" applied to it (--set)
+  // Where each key path of the file was given ("case.toml:12" or "--set KEY=VALUE"), so that
+  // checks after parsing (particle counts, overlaps, stiffness) name file, line and key.
+  std::map<std::string, std::string> locations;
   NumericsConfig numerics;
   FluidConfig fluid;
   std::vector<MaterialConfig> materials;
   std::vector<BodyConfig> bodies;
   OutputConfig output;
+
+  // "<file>:<line>: <key>" for a key path such as "body[1].shape": the key's own location,
+  // else that of its nearest enclosing table, else the file.
+  std::string where(const std::string& key) const {
+    for (std::string k = key;;) {
+      if (auto it = locations.find(k); it != locations.end()) return it->second + ": " + key;
+      const std::size_t cut = k.find_last_of(".[");
+      if (cut == std::string::npos || cut == 0) break;
+      k.resize(cut);
+    }
+    return source_path + ":1: " + key;
+  }
 
   const MaterialConfig* find_material(const std::string& n) const {
     for (const auto& m : materials)

@@ -1,6 +1,7 @@
 // Case-file parser (schema_version 1): TOML tables → CaseConfig, defaults filled, every
 // value checked where it is read, cross-references (materials, bodies, domain, tank)
 // checked once everything is read. docs/case_format.md is the user-facing description.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -85,6 +86,35 @@ double num(const Reader& r, std::string_view key, const Rule& rule,
   }
   r.check(rule_ok(rule, *v), key, rule_text(rule), rule.expected, *v);
   return *v;
+}
+
+// A name that becomes part of a file name (vtk/<body>_00000.vtp) and of CSV headers:
+// letters, digits, '_', '-', '.'; not starting with '.'; at most 64 characters.
+bool file_safe_name(const std::string& s) {
+  if (s.empty() || s.size() > 64 || s[0] == '.') return false;
+  for (char c : s) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+// Segments p1-p2 and q1-q2 cross or touch (orientation test).
+bool segments_meet(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
+  auto orient = [](Vec2 a, Vec2 b, Vec2 c) {
+    const double v = cross(b - a, c - a);
+    return v > 0.0 ? 1 : (v < 0.0 ? -1 : 0);
+  };
+  auto on = [](Vec2 a, Vec2 b, Vec2 c) {  // c on segment ab, given collinear
+    return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+           c.y <= std::max(a.y, b.y);
+  };
+  const int o1 = orient(p1, p2, q1), o2 = orient(p1, p2, q2), o3 = orient(q1, q2, p1),
+            o4 = orient(q1, q2, p2);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && on(p1, p2, q1)) || (o2 == 0 && on(p1, p2, q2)) ||
+         (o3 == 0 && on(q1, q2, p1)) || (o4 == 0 && on(q1, q2, p2));
 }
 
 std::string vec_text(Vec2 v) {
@@ -244,9 +274,10 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) 
     if (!(s.outer_radius > s.inner_radius))
       r->check(false, "outer_radius", "must exceed inner_radius = " + pretty(s.inner_radius),
                "an outer radius > inner radius in m", s.outer_radius);
-    const auto l = r->integer("layers", "a whole number of layers >= 1");
-    if (l && *l < 1)
-      r->bad("layers", "must be >= 1", "a whole number of layers >= 1", std::to_string(*l));
+    const auto l = r->integer("layers", "a whole number of layers in [1, 1000]");
+    if (l && (*l < 1 || *l > 1000))
+      r->bad("layers", "must be in [1, 1000]", "a whole number of layers in [1, 1000]",
+             std::to_string(*l));
     s.layers = l ? static_cast<int>(*l) : 0;
     s.layers = ring_thickness_layers(s, dx);
   } else if (s.type == "polygon") {
@@ -260,15 +291,27 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) 
     for (std::size_t i = 0, j = s.vertices.size() - 1; i < s.vertices.size(); j = i++)
       a += cross(s.vertices[j], s.vertices[i]);
     if (!(std::abs(a) > 0.0)) r->bad("vertices", "polygon has zero area", e);
+    // Non-adjacent edges must not meet: a self-intersecting outline has no inside.
+    const std::size_t nv = s.vertices.size();
+    for (std::size_t i = 0; i < nv; ++i)
+      for (std::size_t j = i + 1; j < nv; ++j) {
+        if (j == i + 1 || (i == 0 && j == nv - 1)) continue;  // adjacent edges share a vertex
+        if (segments_meet(s.vertices[i], s.vertices[(i + 1) % nv], s.vertices[j],
+                          s.vertices[(j + 1) % nv]))
+          r->bad("vertices",
+                 "polygon edges " + std::to_string(i) + " and " + std::to_string(j) + " intersect",
+                 "a simple (non-self-intersecting) polygon");
+      }
   } else {  // tank
     r->allow({"type", "min", "max", "layers", "open_top"}, ctx);
     if (kind == "elastic" || kind == "rigid_free")
       r->bad("type", "a tank must be a rigid_fixed or rigid_prescribed body",
              "kind = 'rigid_fixed' on the body", "kind '" + kind + "'");
     s.box = read_box(*r);
-    const auto l = r->integer("layers", "a whole number of wall layers >= 1");
-    if (l && *l < 1)
-      r->bad("layers", "must be >= 1", "a whole number of wall layers >= 1", std::to_string(*l));
+    const auto l = r->integer("layers", "a whole number of wall layers in [1, 1000]");
+    if (l && (*l < 1 || *l > 1000))
+      r->bad("layers", "must be in [1, 1000]", "a whole number of wall layers in [1, 1000]",
+             std::to_string(*l));
     s.layers = l ? static_cast<int>(*l) : kDefaultTankLayers;
     s.open_top = r->boolean("open_top").value_or(true);
   }
@@ -281,6 +324,12 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
   const auto name = r.string("name", "a body name");
   if (!name || name->empty()) r.missing("name", "a non-empty body name");
   b.name = *name;
+  const std::string name_rule =
+      "a body name of letters, digits, '_', '-', '.' (it names files and CSV columns), not "
+      "starting with '.' and not 'fluid'";
+  if (!file_safe_name(b.name))
+    r.bad("name", "unusable as a file name", name_rule, "\"" + b.name + "\"");
+  if (b.name == "fluid") r.bad("name", "'fluid' names the water's files", name_rule, "\"fluid\"");
   b.kind = r.choice("kind", kKinds).value_or("elastic");
   std::vector<std::string> keys{"name",      "kind",     "material",         "dx",
                                 "h_over_dx", "velocity", "angular_velocity", "gravity",
@@ -438,6 +487,12 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
   o.vtk_precision = r->choice("vtk_precision", {"float32", "float64"}).value_or("float32");
   o.vtk_compression = r->choice("vtk_compression", {"none", "zlib"}).value_or("none");
   o.plot = r->choice("plot", kPlots).value_or("");
+  if (o.plot == "dam_break" && !(c.numerics.gravity.y < 0.0))
+    r->bad("plot", "the dam-break plot scales time by sqrt(g/a)",
+           "gravity pointing down (numerics.gravity.y < 0), or another plot",
+           "gravity " + vec_text(c.numerics.gravity));
+  if (o.plot == "dam_break" && c.fluid.blocks.empty())
+    r->bad("plot", "the dam-break plot needs the water column", "a [[fluid.block]]");
   const auto probes = r->table_array("probe", "[[output.probe]] tables with name and kind");
   std::set<std::string> names;
   for (std::size_t i = 0; i < probes.size(); ++i) {
@@ -456,8 +511,16 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     if (on_body) p.allow({"name", "kind", "body", "position"}, ctx);
     pc.name = p.string("name", "a probe name").value_or(pc.kind + "_" + std::to_string(i));
     if (pc.name.empty()) p.bad("name", "empty name", "a non-empty probe name");
-    if (!names.insert(pc.name).second)
-      p.bad("name", "duplicate probe name", "a name no other probe uses", "\"" + pc.name + "\"");
+    if (!file_safe_name(pc.name))
+      p.bad("name", "unusable as a CSV column name",
+            "a probe name of letters, digits, '_', '-', '.'", "\"" + pc.name + "\"");
+    // Column names in probes.csv: body_displacement writes <name>_x and <name>_y.
+    std::vector<std::string> cols{pc.name};
+    if (pc.kind == "body_displacement") cols = {pc.name + "_x", pc.name + "_y"};
+    for (const std::string& col : cols)
+      if (col == "time" || col == "leaked_particles" || !names.insert(col).second)
+        p.bad("name", "probes.csv column '" + col + "' clashes with another column",
+              "a name no other probe column uses", "\"" + pc.name + "\"");
     if (pc.kind == "pressure" || on_body) {
       pc.position = vec(p, "position", "coordinates in m");
       if (!box_inside({pc.position, pc.position}, c.numerics.domain))
@@ -505,6 +568,17 @@ CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
   const auto name = root.string("name", "a case name");
   if (!name || name->empty()) root.missing("name", "a non-empty case name (a string)");
   c.name = *name;
+  // The default output folder is results/<name>.
+  const bool folder_ok = c.name != "." && c.name != ".." && c.name.size() <= 128 &&
+                         c.name.find('/') == std::string::npos &&
+                         std::none_of(c.name.begin(), c.name.end(), [](char ch) {
+                           return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f;
+                         });
+  if (!folder_ok)
+    root.bad("name", "unusable as a folder name (results/<name>)",
+             "a name without '/' or control characters, not '.' or '..', at most 128 "
+             "characters",
+             "\"" + c.name + "\"");
 
   c.numerics = parse_numerics(root);
   std::vector<Reader> blocks;
@@ -551,6 +625,31 @@ CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
   return c;
 }
 
+// Every key path of the table with where it was given (CaseConfig::locations).
+void record_locations(const toml::table& t, const std::string& prefix, const std::string& source,
+                      std::map<std::string, std::string>& out) {
+  for (auto&& [k, node] : t) {
+    const std::string path =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    auto place = [&](const toml::source_region& r, const toml::source_region& fallback) {
+      const toml::source_region& use = r.begin.line > 0 ? r : fallback;
+      const std::string origin = case_detail::origin_of(use, source);
+      return origin == source ? source + ":" + std::to_string(use.begin.line) : origin;
+    };
+    out[path] = place(node.source(), k.source());
+    if (const toml::table* sub = node.as_table()) {
+      record_locations(*sub, path, source, out);
+    } else if (const toml::array* a = node.as_array()) {
+      for (std::size_t i = 0; i < a->size(); ++i)
+        if (const toml::table* e = a->get(i)->as_table()) {
+          const std::string ep = path + "[" + std::to_string(i) + "]";
+          out[ep] = place(e->source(), k.source());
+          record_locations(*e, ep, source, out);
+        }
+    }
+  }
+}
+
 }  // namespace
 
 CaseConfig parse_case_string(const std::string& text, const std::string& source_name,
@@ -566,6 +665,7 @@ CaseConfig parse_case_string(const std::string& text, const std::string& source_
   case_detail::apply_overrides(tbl, overrides);
   CaseConfig c = parse_root(tbl, source_name);
   c.overrides = overrides;
+  record_locations(tbl, "", source_name, c.locations);
   return c;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -50,10 +51,27 @@ void internal_forces(SolidBody& body, std::span<const Vec2> vel, const Executor&
       n, [&](std::size_t i) { body.f_int[i] = s.f_stress[i] + body.f_av[i] + body.f_hg[i]; });
 }
 
-void advance_elastic(SolidBody& body, double dt, Vec2 gravity, const Executor& exec) {
+// More sub-steps than this in one fluid step means the body's speed has blown up (the case
+// checks refuse stiff materials before the run); it also keeps the count inside an int.
+constexpr double kMaxSubstepsInRun = 1e7;
+
+void advance_elastic(SolidBody& body, double t, double dt, Vec2 gravity, const Executor& exec) {
   const std::size_t n = body.size();
   const double dts = stable_time_step(body);
-  const int steps = std::max(1, static_cast<int>(std::ceil(dt / dts * (1.0 - 1e-12))));
+  const double ratio = dt / dts;
+  if (!(ratio <= kMaxSubstepsInRun)) {
+    std::size_t fast = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(norm(body.v[i]) <= norm(body.v[fast]))) fast = i;
+    std::ostringstream os;
+    os << "body '" << body.name << "' particle " << fast << " at t = " << t << " s: velocity ("
+       << body.v[fast].x << ", " << body.v[fast].y << ") m/s at (" << body.x[fast].x << ", "
+       << body.x[fast].y << ") m makes the solid CFL step " << dts << " s, " << ratio
+       << " sub-steps for a step of " << dt
+       << " s (limit 1e7); limiting criterion: solid CFL (body " << body.name << ")";
+    throw DivergenceError(os.str());
+  }
+  const int steps = std::max(1, static_cast<int>(std::ceil(ratio * (1.0 - 1e-12))));
   const double h = dt / steps;
   body.last_substeps = steps;
   const Vec2 g = body.feels_gravity ? gravity : Vec2{};
@@ -185,9 +203,11 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
     if (!(j2->yield_stress > 0.0) || !(j2->hardening_modulus >= 0.0))
       throw InputError("body '" + cfg.name + "': material '" + mat.name +
                        "' needs yield_stress > 0 and hardening_modulus >= 0");
-  if (!(mat.youngs_modulus > 0.0) || !(mat.poisson_ratio >= 0.0 && mat.poisson_ratio < 0.5))
+  // Plane-strain stability (positive P-wave modulus and shear modulus): -1 < ν < 0.5;
+  // auxetic materials (ν < 0) are valid.
+  if (!(mat.youngs_modulus > 0.0) || !(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5))
     throw InputError("body '" + cfg.name + "': material '" + mat.name +
-                     "' needs youngs_modulus > 0 and 0 <= poisson_ratio < 0.5");
+                     "' needs youngs_modulus > 0 and -1 < poisson_ratio < 0.5");
   SolidMaterial& sm = body.material;
   sm.density = mat.density > 0.0 ? mat.density : body.rho0.empty() ? 0.0 : body.rho0[0];
   sm.youngs_modulus = mat.youngs_modulus;
@@ -245,7 +265,7 @@ double stable_time_step(const SolidBody& body) {
 
 void advance_body(SolidBody& body, double t, double dt, Vec2 gravity, const Executor& exec) {
   if (body.is_elastic()) {
-    advance_elastic(body, dt, gravity, exec);
+    advance_elastic(body, t, dt, gravity, exec);
   } else {
     body.last_substeps = 1;
     advance_rigid(body, t, dt, gravity);

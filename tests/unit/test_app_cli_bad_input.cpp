@@ -52,6 +52,14 @@ std::string edit(const std::string& from, const std::string& to) {
   return s;
 }
 
+// s with the first occurrence of `from` replaced by `to`.
+std::string with(std::string s, const std::string& from, const std::string& to) {
+  const std::size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the text";
+  if (at != std::string::npos) s.replace(at, from.size(), to);
+  return s;
+}
+
 struct CliResult {
   int code = -1;
   std::string out, err;
@@ -197,6 +205,88 @@ std::vector<BadCase> bad_cases() {
        15,
        "fluid.block[0].max",
        {"domain"}},
+      // Issue 12: inputs `check` accepted and the run then crashed on or lost.
+      {"body with no particles (thinner than dx) and a probe on it",
+       std::string(kGood) +
+           "[[body]]\nname = \"sliver\"\nkind = \"rigid_fixed\"\n[body.shape]\n"
+           "type = \"polygon\"\nvertices = [[0.61, 0.61], [0.69, 0.61], [0.69, 0.62], "
+           "[0.61, 0.62]]\n[output]\n[[output.probe]]\nname = \"p\"\n"
+           "kind = \"body_pressure\"\nbody = \"sliver\"\nposition = [0.65, 0.615]\n",
+       27,
+       "body[1].shape",
+       {"has no particles"}},
+      {"body name with a space",
+       edit("name = \"tank\"", "name = \"my tank\""),
+       18,
+       "body[0].name",
+       {"unusable as a file name"}},
+      {"body name with a slash",
+       edit("name = \"tank\"", "name = \"a/b\""),
+       18,
+       "body[0].name",
+       {"unusable as a file name"}},
+      {"body named fluid",
+       edit("name = \"tank\"", "name = \"fluid\""),
+       18,
+       "body[0].name",
+       {"'fluid'"}},
+      {"probe CSV columns clash",
+       std::string(kGood) +
+           "[output]\n[[output.probe]]\nname = \"a\"\nkind = \"body_displacement\"\n"
+           "body = \"tank\"\nposition = [0.0, 0.0]\n[[output.probe]]\nname = \"a_x\"\n"
+           "kind = \"pressure\"\nposition = [0.2, 0.2]\n",
+       31,
+       "output.probe[1].name",
+       {"clashes"}},
+      {"dam-break plot without gravity",
+       edit("end_time = 0.05\n", "end_time = 0.05\ngravity = [0.0, 0.0]\n") +
+           "[output]\nplot = \"dam_break\"\n",
+       26,
+       "output.plot",
+       {"gravity"}},
+      {"material too stiff for the fluid step",
+       std::string(kGood) +
+           "[materials.steel]\ndensity = 7800.0\nyoungs_modulus = 1e22\n[[body]]\n"
+           "name = \"plate\"\nmaterial = \"steel\"\n[body.shape]\ntype = \"rectangle\"\n"
+           "min = [0.6, 0.6]\nmax = [0.8, 0.7]\n",
+       26,
+       "materials.steel.youngs_modulus",
+       {"too stiff for the fluid step", "sub-steps"}},
+      {"particle count above --max-particles",
+       edit("dx = 0.05", "dx = 1e-5"),
+       5,
+       "numerics.dx",
+       {"particles", "--max-particles"}},
+      {"body far from the rest (neighbour grid by bounding box)",
+       with(edit("dx = 0.05", "dx = 0.005"), "max = [1.5, 1.5]", "max = [1000.0, 1000.0]") +
+           "[[body]]\nname = \"far\"\nkind = \"rigid_fixed\"\n[body.shape]\ntype = \"disc\"\n"
+           "centre = [900.0, 900.0]\nradius = 0.2\n",
+       27,
+       "body[1].shape",
+       {"neighbour-search cells"}},
+      {"tank layers beyond int",
+       std::string(kGood) + "layers = 2147483648\n",
+       24,
+       "body[0].shape.layers",
+       {"2147483648"}},
+      {"overlapping bodies",
+       std::string(kGood) + "[[body]]\nname = \"block\"\nkind = \"rigid_fixed\"\n[body.shape]\n"
+                            "type = \"rectangle\"\nmin = [0.9, 0.5]\nmax = [1.1, 0.6]\n",
+       27,
+       "body[1].shape",
+       {"overlaps body 'tank'"}},
+      {"self-intersecting polygon",
+       std::string(kGood) +
+           "[[body]]\nname = \"bowtie\"\nkind = \"rigid_fixed\"\n[body.shape]\n"
+           "type = \"polygon\"\nvertices = [[0.6, 0.6], [0.9, 0.8], [0.9, 0.6], [0.6, 0.7]]\n",
+       29,
+       "body[1].shape.vertices",
+       {"intersect"}},
+      {"case name unusable as a folder",
+       edit("name = \"tiny\"", "name = \"../up\""),
+       2,
+       "name",
+       {"folder"}},
       {"no particles (no fluid block, no body)",
        "schema_version = 1\nname = \"empty\"\n[numerics]\ndx = 0.05\nend_time = 0.05\n"
        "[numerics.domain]\nmin = [-0.5, -0.5]\nmax = [1.5, 1.5]\n[fluid]\nsound_speed = 20.0\n",
@@ -408,6 +498,20 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
   EXPECT_EQ(policy("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT"), "OMP_WAIT_POLICY=passive");
   EXPECT_EQ(policy("env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=5000"), "GOMP_SPINCOUNT=5000");
   EXPECT_EQ(policy("env OMP_WAIT_POLICY=active"), "OMP_WAIT_POLICY=active");
+}
+
+// Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.
+TEST_F(CliTest, NegativePoissonRatioIsAccepted) {
+  write_case("foam.toml", std::string(kGood) +
+                              "[materials.foam]\ndensity = 300.0\nyoungs_modulus = 1e6\n"
+                              "poisson_ratio = -0.3\n[[body]]\nname = \"foam\"\n"
+                              "material = \"foam\"\n[body.shape]\ntype = \"rectangle\"\n"
+                              "min = [0.6, 0.6]\nmax = [0.8, 0.7]\n");
+  const CliResult c = run("check foam.toml");
+  EXPECT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("foam: "), std::string::npos) << c.out;
+  const CliResult r = run("run foam.toml --out out --threads 1 --max-steps 3 --quiet");
+  EXPECT_EQ(r.code, 0) << r.err;
 }
 
 // An elastic body too small to have a finite-particle neighbour set (one particle) is bad
