@@ -102,7 +102,7 @@ int run_or_check(const std::string& cmd, Request& req) {
   Simulation sim(std::move(cfg), opt);
   warn(sim);
   const int code = sim.run();
-  if (code == 0 && opt.write_output && !sim.config().output.plot.empty()) {
+  if (code == 0 && sim.completed() && opt.write_output && !sim.config().output.plot.empty()) {
     const int pc = plot_command(opt.out_dir, opt.quiet);
     if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
   }
@@ -123,7 +123,7 @@ int resume_run(Request& req) {
   sim.resume_from(checkpoint);
   if (!opt.quiet) std::fprintf(stderr, "resuming from %s\n", checkpoint.c_str());
   const int code = sim.run();
-  if (code == 0 && !sim.config().output.plot.empty()) {
+  if (code == 0 && sim.completed() && !sim.config().output.plot.empty()) {
     const int pc = plot_command(opt.out_dir, opt.quiet);
     if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
   }

@@ -227,8 +227,12 @@ void Recorder::write_summary(const RunStatus& status,
   JsonObject summary;
   summary.set("case", cfg_.name);
   summary.set("version", std::string(SLAMSPH_VERSION));
-  summary.set("status", status.code == 0 ? std::string("completed") : std::string("diverged"));
+  // "stopped": ended early on purpose (--max-steps); its peaks are not the case's peaks.
+  const std::string state =
+      status.code != 0 ? "diverged" : (status.stopped.empty() ? "completed" : "stopped");
+  summary.set("status", state);
   if (status.code != 0) summary.set("failure", status.failure);
+  if (!status.stopped.empty()) summary.set("reason", status.stopped);
   JsonObject counts;
   counts.set("fluid", static_cast<long>(sys.fluid.size()));
   for (const SolidBody& b : sys.bodies) counts.set(b.name, static_cast<long>(b.size()));
@@ -249,13 +253,16 @@ void Recorder::write_summary(const RunStatus& status,
   for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
     JsonObject o;
     o.set("body", sys.bodies[b].name);
-    o.set("peak_force_N_per_m", std::vector<double>{peak_[b].x, peak_[b].y});
-    o.set("peak_time_s", peak_time_[b]);
+    // No step, no history: a peak of the initial load only would read as a result.
+    if (st_.steps() > 0) {
+      o.set("peak_force_N_per_m", std::vector<double>{peak_[b].x, peak_[b].y});
+      o.set("peak_time_s", peak_time_[b]);
+    }
     o.set("impulse_N_s_per_m", std::vector<double>{impulse_[b].x, impulse_[b].y});
     loads.push_back(o);
   }
   summary.set("bodies", loads);
-  if (status.code == 0 && opt_.write_output) {
+  if (state == "completed" && opt_.write_output) {
     JsonObject validation;
     if (validation_report(cfg_, opt_.out_dir, validation)) summary.set("validation", validation);
   }

@@ -39,8 +39,9 @@ struct RecorderResume {
 };
 
 struct RunStatus {
-  int code = 0;         // 0 completed, 3 diverged
+  int code = 0;         // 0 completed or stopped, 3 diverged
   std::string failure;  // divergence message
+  std::string stopped;  // why a run with code 0 ended before end_time (--max-steps), else ""
   double wall_seconds = 0.0;
 };
 

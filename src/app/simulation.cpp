@@ -100,7 +100,11 @@ int Simulation::run() {
         while (schedule.next <= time() + 1e-15) schedule.next += schedule.interval;
         if (steps() != checkpoint_step) checkpoint();
       }
-      if (opt_.max_steps && steps() >= *opt_.max_steps) break;
+      if (opt_.max_steps && steps() >= *opt_.max_steps) {
+        status.stopped =
+            "--max-steps " + std::to_string(*opt_.max_steps) + " reached before end_time";
+        break;
+      }
       rec.before_step();
       stepper_->step();
       rec.after_step();
@@ -124,14 +128,18 @@ int Simulation::run() {
     const double ps = wall > 0.0 ? double(fluid().size()) * double(steps()) / wall : 0.0;
     std::fprintf(stderr,
                  "%s: fluid particles: %zu, %ld fluid steps to t = %.6g s in %.2f s (%.4g "
-                 "particle-steps/s, %d threads)\n",
-                 cfg_.name.c_str(), fluid().size(), steps(), time(), wall, ps, exec_.threads());
+                 "particle-steps/s, %d thread%s)\n",
+                 cfg_.name.c_str(), fluid().size(), steps(), time(), wall, ps, exec_.threads(),
+                 exec_.threads() == 1 ? "" : "s");
+    if (!status.stopped.empty())
+      std::fprintf(stderr, "stopped: %s; results are incomplete\n", status.stopped.c_str());
   }
   if (status.code != 0) {
     std::fprintf(stderr, "error: run diverged: %s\n", status.failure.c_str());
     if (opt_.write_output)
       std::fprintf(stderr, "outputs written so far are kept in %s\n", opt_.out_dir.c_str());
   }
+  completed_ = status.code == 0 && status.stopped.empty();
   return status.code;
 }
 

@@ -27,6 +27,8 @@ class Simulation {
   void step() { stepper_->step(); }
   // The whole run with outputs; returns the process exit code (0 ok, 3 diverged).
   int run();
+  // After run(): true if the run reached end_time (not diverged, not stopped early).
+  bool completed() const { return completed_; }
   // Makes run() continue from a checkpoint of this case (app/checkpoint.h) in place, in
   // the output folder it was written to. The checkpoint is read and checked by run().
   void resume_from(std::string checkpoint_path) { resume_from_ = std::move(checkpoint_path); }
@@ -57,6 +59,7 @@ class Simulation {
   std::unique_ptr<FsiStepper> stepper_;
   std::unique_ptr<ProbeSet> probes_;
   std::string resume_from_;  // checkpoint to continue from ("" = a fresh run)
+  bool completed_ = false;
 };
 
 }  // namespace slamsph

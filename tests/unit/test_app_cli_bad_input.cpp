@@ -500,6 +500,21 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
   EXPECT_EQ(policy("env OMP_WAIT_POLICY=active"), "OMP_WAIT_POLICY=active");
 }
 
+// Issue 12: a run stopped by --max-steps 0 was reported "completed" with a 0 N/m "peak";
+// "1 threads".
+TEST_F(CliTest, MaxStepsZeroIsStoppedNotCompleted) {
+  write_case("good.toml", kGood);
+  const CliResult r = run("run good.toml --out out --threads 1 --max-steps 0");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const std::string s = slurp(work() / "out" / "summary.json");
+  EXPECT_NE(s.find("\"status\": \"stopped\""), std::string::npos) << s;
+  EXPECT_NE(s.find("--max-steps 0"), std::string::npos) << s;
+  EXPECT_EQ(s.find("peak_force"), std::string::npos) << "a peak without a single step:\n" << s;
+  EXPECT_NE(r.err.find("1 thread)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("results are incomplete"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("results in out"), std::string::npos) << "last line names the folder";
+}
+
 // Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.
 TEST_F(CliTest, NegativePoissonRatioIsAccepted) {
   write_case("foam.toml", std::string(kGood) +
