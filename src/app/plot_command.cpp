@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "app/validation_report.h"
 #include "core/error.h"
@@ -9,6 +11,25 @@
 #include "io/plot.h"
 
 namespace slamsph {
+
+namespace {
+
+// The "status" of the run's summary.json ("completed", "stopped", "diverged", ...), or
+// "unknown" when there is no summary (a run killed before it wrote one).
+std::string run_status(const std::string& out_dir) {
+  std::ifstream in(out_dir + "/summary.json");
+  if (!in) return "unknown (no summary.json)";
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string s = ss.str();
+  const std::string key = "\"status\": \"";
+  const std::size_t at = s.find(key);
+  if (at == std::string::npos) return "unknown";
+  const std::size_t b = at + key.size();
+  return s.substr(b, s.find('"', b) - b);
+}
+
+}  // namespace
 
 int plot_command(const std::string& out_dir, bool quiet) {
   const std::string resolved = out_dir + "/case.resolved.toml";
@@ -20,6 +41,12 @@ int plot_command(const std::string& out_dir, bool quiet) {
       std::fprintf(stderr, "%s: the case has no output.plot; nothing to draw\n", out_dir.c_str());
     return 0;
   }
+  // Plots of a run that did not reach its end time must not pass for the case's result.
+  const std::string status = run_status(out_dir);
+  if (status != "completed" && !quiet)
+    std::fprintf(stderr,
+                 "warning: %s: the run is %s, not completed; the plots show an incomplete run\n",
+                 out_dir.c_str(), status.c_str());
   std::string message;
   const int code = plot_results(out_dir, cfg.output.plot, plot_params_for(cfg), message);
   if (code != 0 || !quiet)

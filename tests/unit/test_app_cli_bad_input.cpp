@@ -513,6 +513,14 @@ TEST_F(CliTest, MaxStepsZeroIsStoppedNotCompleted) {
   EXPECT_NE(r.err.find("1 thread)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("results are incomplete"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("results in out"), std::string::npos) << "last line names the folder";
+  // `slamsph plot` on that incomplete run says so.
+  const CliResult s2 =
+      run("run good.toml --out out2 --threads 1 --max-steps 2 --quiet "
+          "--set output.plot=dam_break");
+  ASSERT_EQ(s2.code, 0) << s2.err;
+  EXPECT_FALSE(fs::exists(work() / "out2" / "surge_front.png")) << "plotted an incomplete run";
+  const CliResult p = run("plot out2");  // (fails to draw: the tiny case has no front probe)
+  EXPECT_NE(p.err.find("the run is stopped, not completed"), std::string::npos) << p.err;
 }
 
 // Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.
