@@ -15,6 +15,7 @@
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
+#include "app/stop_signal.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "io/case_file.h"
@@ -263,6 +264,7 @@ int dispatch(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   slamsph::Executor::use_passive_waiting(argv);
+  slamsph::install_stop_handlers();
   try {
     return dispatch(argc, argv);
   } catch (const slamsph::InputError& e) {

@@ -228,8 +228,10 @@ void Recorder::write_summary(const RunStatus& status,
   summary.set("case", cfg_.name);
   summary.set("version", std::string(SLAMSPH_VERSION));
   // "stopped": ended early on purpose (--max-steps); its peaks are not the case's peaks.
-  const std::string state =
-      status.code != 0 ? "diverged" : (status.stopped.empty() ? "completed" : "stopped");
+  const std::string state = status.code != 0         ? "diverged"
+                            : status.signal != 0     ? "interrupted"
+                            : status.stopped.empty() ? "completed"
+                                                     : "stopped";
   summary.set("status", state);
   if (status.code != 0) summary.set("failure", status.failure);
   if (!status.stopped.empty()) summary.set("reason", status.stopped);

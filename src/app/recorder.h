@@ -42,6 +42,7 @@ struct RunStatus {
   int code = 0;         // 0 completed or stopped, 3 diverged
   std::string failure;  // divergence message
   std::string stopped;  // why a run with code 0 ended before end_time (--max-steps), else ""
+  int signal = 0;       // SIGINT/SIGTERM that stopped the run, else 0
   double wall_seconds = 0.0;
 };
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 
@@ -11,6 +12,7 @@
 #include "app/checkpoint.h"
 #include "app/recorder.h"
 #include "app/setup_warnings.h"
+#include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/progress_line.h"
 
@@ -100,6 +102,12 @@ int Simulation::run() {
         while (schedule.next <= time() + 1e-15) schedule.next += schedule.interval;
         if (steps() != checkpoint_step) checkpoint();
       }
+      if (const int sig = stop_signal()) {
+        status.stopped = std::string(sig == SIGINT ? "SIGINT" : "SIGTERM") +
+                         " received; stopped after the step in progress";
+        status.signal = sig;
+        break;
+      }
       if (opt_.max_steps && steps() >= *opt_.max_steps) {
         status.stopped =
             "--max-steps " + std::to_string(*opt_.max_steps) + " reached before end_time";
@@ -140,6 +148,7 @@ int Simulation::run() {
       std::fprintf(stderr, "outputs written so far are kept in %s\n", opt_.out_dir.c_str());
   }
   completed_ = status.code == 0 && status.stopped.empty();
+  if (status.code == 0 && status.signal) return 128 + status.signal;  // 130 SIGINT, 143 SIGTERM
   return status.code;
 }
 

@@ -523,6 +523,34 @@ TEST_F(CliTest, MaxStepsZeroIsStoppedNotCompleted) {
   EXPECT_NE(p.err.find("the run is stopped, not completed"), std::string::npos) << p.err;
 }
 
+// Issue 12: Ctrl-C or SIGTERM killed the run with no message, no summary.json and unflushed
+// CSV rows. Now the step in progress finishes, the final frame and every file are written,
+// summary.json says "interrupted", and the exit code is 128 + signal.
+TEST_F(CliTest, SigintAndSigtermStopCleanly) {
+  write_case("good.toml", kGood);
+  for (const auto& [sig, code] : {std::pair<std::string, int>{"INT", 130}, {"TERM", 143}}) {
+    SCOPED_TRACE(sig);
+    const std::string out = "out_" + sig;
+    const std::string sh = "cd '" + work().string() + "' && ('" + SLAMSPH_BINARY +
+                           "' run good.toml --out " + out +
+                           " --threads 1 --quiet --end-time 1000 & pid=$!; sleep 1.5; kill -" +
+                           sig + " $pid; wait $pid; echo $? > rc_" + sig + ".txt)";
+    ASSERT_EQ(std::system(sh.c_str()), 0);
+    EXPECT_EQ(std::atoi(slurp(work() / ("rc_" + sig + ".txt")).c_str()), code);
+    const std::string s = slurp(work() / out / "summary.json");
+    EXPECT_NE(s.find("\"status\": \"interrupted\""), std::string::npos) << s;
+    EXPECT_NE(s.find("SIG" + sig + " received"), std::string::npos) << s;
+    // The last probe row and the last frame are at the time the run stopped.
+    const std::string probes = slurp(work() / out / "probes.csv");
+    const std::string last = probes.substr(probes.rfind('\n', probes.size() - 2) + 1);
+    const double t_stop = std::atof(last.c_str());
+    EXPECT_GT(t_stop, 0.0) << probes.substr(0, 200);
+    EXPECT_NE(s.find("\"end_time_reached\": "), std::string::npos);
+    const std::string pvd = slurp(work() / out / "fields.pvd");
+    EXPECT_NE(pvd.find("</VTKFile>"), std::string::npos);
+  }
+}
+
 // Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.
 TEST_F(CliTest, NegativePoissonRatioIsAccepted) {
   write_case("foam.toml", std::string(kGood) +
