@@ -148,8 +148,7 @@ void check_built_case(const CaseConfig& cfg, const FsiSystem& sys) {
         if (hit)
           throw InputError(cfg.where(key("body", b, ".shape")) + ": body '" + B.name +
                            "' overlaps body '" + A.name + "' near (" + num(A.X[i].x) + ", " +
-                           num(A.X[i].y) +
-                           ") m; expected bodies that do not overlap");
+                           num(A.X[i].y) + ") m; expected bodies that do not overlap");
       }
     }
 
