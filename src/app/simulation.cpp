@@ -84,8 +84,9 @@ int Simulation::run() {
   const bool checkpoints = schedule.interval > 0.0 && opt_.write_output;
   long checkpoint_step = resume_from_.empty() ? -1 : steps();  // step of the last checkpoint
   const double end = cfg_.numerics.end_time;
-  const bool show_progress = !opt_.quiet && isatty(STDERR_FILENO);
-  ProgressLine progress(end, show_progress);
+  // A terminal gets the line redrawn in place; a log a plain line every 10 s.
+  ProgressLine progress(end, !opt_.quiet);
+  if (!isatty(STDERR_FILENO)) progress.set_plain(10.0);
   const auto t0 = std::chrono::steady_clock::now();
   auto checkpoint = [&] {
     rec.flush();

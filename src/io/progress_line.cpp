@@ -74,6 +74,12 @@ void ProgressLine::draw(double now) {
   if (t_ > t0_sim_ && elapsed > 0.0) eta = (end_time_ - t_) * elapsed / (t_ - t0_sim_);
   if (eta < 0.0 && t_ >= end_time_) eta = 0.0;
   const std::string line = format(t_, steps_, rate, dt_, eta);
+  if (plain_) {
+    *out_ << "progress: " << line << "  elapsed " << format_hms(elapsed) << '\n' << std::flush;
+    last_draw_wall_ = now;
+    last_draw_steps_ = steps_;
+    return;
+  }
   std::string padded = "\r" + line;
   if (line.size() < last_len_) padded.append(last_len_ - line.size(), ' ');
   *out_ << padded << std::flush;
@@ -87,7 +93,7 @@ void ProgressLine::finish() {
   finished_ = true;
   if (!started_) return;
   draw(clock_());
-  *out_ << '\n' << std::flush;
+  if (!plain_) *out_ << '\n' << std::flush;
 }
 
 }  // namespace slamsph

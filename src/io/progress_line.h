@@ -20,6 +20,13 @@ class ProgressLine {
   ProgressLine(double end_time, bool enabled, Clock clock, std::ostream& out,
                double min_interval = 0.25);
 
+  // For logs (stderr not a terminal): one plain line per redraw, ending in '\n', no '\r',
+  // with the elapsed wall time, at most every `interval` seconds.
+  void set_plain(double interval) {
+    plain_ = true;
+    min_interval_ = interval;
+  }
+
   // Redraws if at least min_interval has passed since the last redraw (the first call
   // always draws).
   void update(double t, long steps, double dt);
@@ -38,6 +45,7 @@ class ProgressLine {
   Clock clock_;
   std::ostream* out_;
   double min_interval_;
+  bool plain_ = false;
   bool started_ = false;
   bool finished_ = false;
   double t0_wall_ = 0.0, t0_sim_ = 0.0;

@@ -1,6 +1,8 @@
 // ProgressLine with a fake clock: rate limiting (~4 Hz), steps/s, percentage and ETA.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <sstream>
 
 #include "io/progress_line.h"
@@ -70,6 +72,28 @@ TEST(IoOutputProgress, DisabledPrintsNothing) {
   p.update(0.9, 20, 1e-3);
   p.finish();
   EXPECT_TRUE(out.str().empty());
+}
+
+// Issue 12: batch logs showed only the last line. Off a terminal, a plain line every N
+// seconds of wall time, each ending in a newline, with elapsed time and ETA.
+TEST(IoOutputProgress, PlainLinesForLogs) {
+  double now = 0.0;
+  std::ostringstream out;
+  ProgressLine p(
+      1.0, true, [&] { return now; }, out);
+  p.set_plain(10.0);
+  p.update(0.0, 0, 1e-3);  // first update draws
+  for (int k = 1; k <= 30; ++k) {
+    now = k;
+    p.update(0.02 * k, 10 * k, 1e-3);
+  }
+  p.finish();
+  const std::string s = out.str();
+  EXPECT_EQ(s.find('\r'), std::string::npos) << s;
+  EXPECT_EQ(std::count(s.begin(), s.end(), '\n'), 5) << s;  // t = 0, 10, 20, 30 s + finish
+  EXPECT_NE(s.find("progress: t 0.2/1 s"), std::string::npos) << s;
+  EXPECT_NE(s.find("elapsed 0:00:10"), std::string::npos) << s;
+  EXPECT_NE(s.find("ETA"), std::string::npos) << s;
 }
 
 }  // namespace
