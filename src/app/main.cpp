@@ -9,6 +9,7 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "app/checkpoint.h"
@@ -141,7 +142,8 @@ int dispatch(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 1 internal error, 2 bad input (the message names file, line "
-      "and key; nothing is written), 3 the run diverged (outputs so far are kept).\n"
+      "and key; nothing is written), 3 the run diverged (outputs so far are kept), 4 the "
+      "output folder cannot be written (path and OS reason).\n"
       "'slamsph help COMMAND' or 'slamsph COMMAND --help' lists a command's options.");
 
   CLI::App* run = app.add_subcommand("run", "Run a case and write its results");
@@ -273,6 +275,11 @@ int main(int argc, char** argv) {
   } catch (const slamsph::DivergenceError& e) {
     std::fprintf(stderr, "error: run diverged: %s\n", e.what());
     return 3;
+  } catch (const std::system_error& e) {
+    // The environment refused (no such folder, permission, disk full): exit 4 with the path
+    // and the OS reason. std::filesystem_error is a std::system_error.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 4;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;

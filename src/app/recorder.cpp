@@ -1,7 +1,9 @@
 #include "app/recorder.h"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <type_traits>
 
 #include "app/validation_report.h"
@@ -46,7 +48,14 @@ void Recorder::start(const RecorderResume* resume) {
     std::filesystem::create_directories(dir);
     CaseConfig resolved = cfg_;  // a resumed run keeps the first run's --set notes
     if (resume) resolved.overrides = resume->case_overrides;
-    std::ofstream(dir + "/case.resolved.toml") << resolved_case_toml(resolved);
+    {
+      std::ofstream f(dir + "/case.resolved.toml");
+      f << resolved_case_toml(resolved);
+      f.close();
+      if (!f)
+        throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                                "cannot write " + dir + "/case.resolved.toml");
+    }
     const VtkOptions vo{cfg_.output.vtk_precision == "float64",
                         cfg_.output.vtk_compression == "zlib"};
     if (cfg_.output.vtk && resume && resume->vtk)

@@ -551,6 +551,17 @@ TEST_F(CliTest, SigintAndSigtermStopCleanly) {
   }
 }
 
+// Issue 12: an unwritable output folder was an "internal error" (exit 1). It is an
+// environment error: exit 4 with the path and the OS reason.
+TEST_F(CliTest, UnwritableOutputFolderExitsFourWithPathAndReason) {
+  write_case("good.toml", kGood);
+  const CliResult r = run("run good.toml --out /proc/slamsph_no_such_dir --max-steps 1");
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("/proc/slamsph_no_such_dir"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
 // Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.
 TEST_F(CliTest, NegativePoissonRatioIsAccepted) {
   write_case("foam.toml", std::string(kGood) +
