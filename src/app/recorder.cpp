@@ -153,7 +153,7 @@ void Recorder::write_frame() {
   auto registry_fields = [](const auto& set, std::vector<PointField>& out) {
     std::decay_t<decltype(set)>::visit_fields(set, [&](const FieldSpec& spec, const auto& f) {
       using T = typename std::decay_t<decltype(f)>::value_type;
-      if (!spec.vtk) return;
+      if (!spec.vtk || f.size() != set.size()) return;  // e.g. F, P of a rigid body: empty
       std::vector<std::string> names;
       if (field_components<T>() == 4) names = {"xx", "xy", "yx", "yy"};
       out.push_back({std::string(spec.name), std::string(spec.unit), field_components<T>(),

@@ -99,17 +99,18 @@ struct SolidBody {
 
   // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
   // clamps, layers; the topology) is rebuilt from the case by setup_body, so it is not persistent;
-  // f_av and f_hg are recomputed before every use inside a sub-step. Derived output
-  // (strains, stresses, and velocity, F, P in their output form) comes from
-  // solid_output_fields (solid/body_dynamics.h).
+  // f_av and f_hg are recomputed before every use inside a sub-step. Fields flagged vtk
+  // are written as they are (F and P only for elastic bodies, where they have one value per
+  // particle); derived output (displacement, strains, Cauchy stress and its invariants)
+  // comes from solid_output_fields (solid/body_dynamics.h).
   template <class Self, class F>
   static void visit_fields(Self& s, F&& f) {
     f(FieldSpec{"position", "m", true, false}, s.x);  // the VTK points
-    f(FieldSpec{"velocity", "m/s", true, false}, s.v);
+    f(FieldSpec{"velocity", "m/s", true, true}, s.v);
     f(FieldSpec{"acceleration", "m/s^2", true, false}, s.a);
     f(FieldSpec{"fluid_force", "N/m", true, true}, s.f_fluid);
-    f(FieldSpec{"deformation_gradient", "-", true, false}, s.F);
-    f(FieldSpec{"pk1_stress", "Pa", true, false}, s.P);
+    f(FieldSpec{"deformation_gradient", "-", true, true}, s.F);
+    f(FieldSpec{"pk1_stress", "Pa", true, true}, s.P);
     f(FieldSpec{"specific_internal_energy", "J/kg", true, false}, s.e);
     f(FieldSpec{"internal_force", "N/m", true, false}, s.f_int);
     f(FieldSpec{"viscous_force", "N/m", false, false}, s.f_av);
@@ -121,9 +122,10 @@ struct SolidBody {
     f(FieldSpec{"clamped", "-", false, false}, s.clamped);
     f(FieldSpec{"layer", "-", false, false}, s.layer);
     // The material law's history fields, under the names the law declares
-    // (solid/materials/material_law.h); solid_output_fields writes those marked for output.
+    // (solid/materials/material_law.h), written to VTK if the law marks them for output.
     for (std::size_t k = 0; k < s.history.fields.size(); ++k)
-      f(FieldSpec{s.history.fields[k].name, s.history.fields[k].unit, true, false},
+      f(FieldSpec{s.history.fields[k].name, s.history.fields[k].unit, true,
+                  s.history.fields[k].output},
         s.history.values[k]);
   }
   // The body's state that is not per particle: rigid motion and energy accumulators.
