@@ -40,7 +40,7 @@ void PrintTo(const RestartCase& c, std::ostream* os) {
 
 const RestartCase kCases[] = {
     {"elastic_cylinder_entry", "0.01", 0.012, "0.0015"},
-    {"elastic_gate", "0.002", 0.016, "0.002"},
+    {"elastic_gate", "0.0015", 0.016, "0.002"},
     {"dam_break", "0.02", 0.08, "0.01"},
 };
 
