@@ -17,21 +17,125 @@ const char* slamming_theory_name(SlammingTheory th) {
       return "von Karman";
     case SlammingTheory::Wagner:
       return "Wagner";
+    case SlammingTheory::WagnerCircle:
+      return "Wagner (exact circle)";
+    case SlammingTheory::ModifiedLogvinovich:
+      return "modified Logvinovich";
   }
   return "?";
 }
 
+bool slamming_theory_is_2d(SlammingTheory th) {
+  return th != SlammingTheory::CampbellWeynberg;
+}
+
+std::vector<SlammingTheory> all_slamming_theories() {
+  return {SlammingTheory::CampbellWeynberg, SlammingTheory::VonKarman, SlammingTheory::Wagner,
+          SlammingTheory::WagnerCircle, SlammingTheory::ModifiedLogvinovich};
+}
+
+double wagner_circle_max_s_over_r() {
+  return 1.0 - 2.0 / std::numbers::pi;
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Exact-circle Wagner state at submergence s/R: k = c/R and the expansion rate of the
+// wetted region, a = (dc/dt)/V = 1/(ds/dc). From s/R = 1 − (2/π)E(k) and
+// dE/dk = (E − K)/k: ds/dc = (2/π)(K − E)/k.
+struct WagnerCircleState {
+  double k = kNaN;
+  double a = kNaN;  // (dc/dt)/V
+  double K = kNaN, E = kNaN;
+};
+
+WagnerCircleState wagner_circle_state(double s_over_r) {
+  WagnerCircleState st;
+  if (!(s_over_r > 0.0) || s_over_r > wagner_circle_max_s_over_r()) return st;
+  // s/R(k) increases monotonically from 0 (k = 0) to 1 − 2/π (k = 1): bisection.
+  double lo = 0.0, hi = 1.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const double s = 1.0 - (2.0 / std::numbers::pi) * std::comp_ellint_2(mid);
+    (s < s_over_r ? lo : hi) = mid;
+  }
+  st.k = 0.5 * (lo + hi);
+  if (st.k >= 1.0) st.k = std::nextafter(1.0, 0.0);
+  st.K = std::comp_ellint_1(st.k);
+  st.E = std::comp_ellint_2(st.k);
+  st.a = std::numbers::pi * st.k / (2.0 * (st.K - st.E));
+  return st;
+}
+
+// Modified Logvinovich model (Korobkin 2004, J. Eng. Math. 48:217; Tassin et al. 2010).
+// The body-surface potential is the Wagner (flat-plate) potential continued to the body
+// surface y = f(x) − h: φ_b = −ḣ[sqrt(c² − x²) + f(x) − h]. Bernoulli on the moving
+// surface with the kinematic condition gives, at constant speed ḣ = V,
+//   p/ρ = V c ċ / sqrt(c² − x²) − V²/2 − (V²/2) x² / ((c² − x²)(1 + f'²)),
+// and for the circle 1 + f'² = R²/(R² − x²). The pressure is integrated where it is
+// positive, |x| < x0. With ξ = x/c and a = ċ/V, p = 0 where a sqrt(1 − ξ²) = (1 − k²ξ⁴)/2.
+double logvinovich_zero(const WagnerCircleState& st) {
+  const double k2 = st.k * st.k;
+  auto g = [&](double xi) {
+    return st.a * std::sqrt(1.0 - xi * xi) - 0.5 * (1.0 - k2 * xi * xi * xi * xi);
+  };
+  if (!(g(0.0) > 0.0)) return 0.0;  // no positive pressure anywhere
+  double lo = 0.0, hi = 1.0;        // g(1) = −(1 − k²)/2 < 0
+  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (g(mid) > 0.0 ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// Cs = (2/R) ∫₀^{x0} p/(ρV²) dx in closed form (x = c sin θ for the first term;
+// x²(R² − x²)/((c² − x²)R²) = (c²/(c² − x²) − 1)(1 − x²/R²) for the last):
+//   Cs = 2[ k a asin ξ0 − k ξ0/2 − ( k(1 − k²) atanh ξ0 − k ξ0 (1 − k²) + k³ ξ0³/3 )/2 ].
+double logvinovich_cs(const WagnerCircleState& st) {
+  const double xi = logvinovich_zero(st);
+  if (xi <= 0.0) return 0.0;
+  const double k = st.k, k2 = k * k;
+  return 2.0 * (k * st.a * std::asin(xi) - 0.5 * k * xi -
+                0.5 * (k * (1.0 - k2) * std::atanh(xi) - k * xi * (1.0 - k2) +
+                       k2 * k * xi * xi * xi / 3.0));
+}
+
+}  // namespace
+
+double wagner_circle_half_width(double s_over_r) {
+  if (s_over_r == 0.0) return 0.0;
+  return wagner_circle_state(s_over_r).k;
+}
+
+double logvinovich_circle_pressure_zero(double s_over_r) {
+  const WagnerCircleState st = wagner_circle_state(s_over_r);
+  return std::isnan(st.k) ? kNaN : logvinovich_zero(st);
+}
+
 double slamming_coefficient(SlammingTheory th, double s_over_d) {
   constexpr double pi = std::numbers::pi;
+  const double s_over_r = 2.0 * s_over_d;
   switch (th) {
     case SlammingTheory::CampbellWeynberg:
       return 5.15 / (1.0 + 19.0 * s_over_d) + 0.55 * s_over_d;
-    case SlammingTheory::VonKarman:
-      return std::max(0.0, pi * (1.0 - 2.0 * s_over_d));
+    case SlammingTheory::VonKarman:  // added mass ρπc²/2 with the geometric c² = 2Rs − s²
+      return std::max(0.0, pi * (1.0 - s_over_r));
     case SlammingTheory::Wagner:
       return 2.0 * pi;
+    case SlammingTheory::WagnerCircle: {  // F = d/dt(ρπc²V/2) = ρπ c ċ V
+      if (s_over_r == 0.0) return 2.0 * pi;
+      const WagnerCircleState st = wagner_circle_state(s_over_r);
+      return pi * st.k * st.a;  // = π² k² / (2(K − E)); NaN beyond full wetting
+    }
+    case SlammingTheory::ModifiedLogvinovich: {
+      if (s_over_r == 0.0) return 2.0 * pi;  // the Wagner limit
+      const WagnerCircleState st = wagner_circle_state(s_over_r);
+      return std::isnan(st.k) ? kNaN : logvinovich_cs(st);
+    }
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return kNaN;
 }
 
 double slamming_force(SlammingTheory th, double s_over_d, double density, double velocity,

@@ -1,7 +1,9 @@
 // Reference curves and validation metrics from docs ../shared/validation/README.md:
-//  §1 cylinder water entry: slamming coefficient Cs = F / (ρ V² R), submergence s = V t;
-//     von Kármán (1929) Cs = π(1 − 2s/D), Wagner (1932) Cs = 2π, Campbell & Weynberg
-//     (1980, as in DNV-RP-C205) Cs = 5.15/(1 + 19 s/D) + 0.55 s/D.
+//  §1/§11 cylinder water entry at constant speed: slamming coefficient Cs = F / (ρ V² R),
+//     submergence s = V t. 2D theories: von Kármán (1929) with the exact circle
+//     Cs = π(1 − s/R); Wagner (1932) with the parabola, Cs = 2π; Wagner with the exact
+//     circle; the modified Logvinovich model (Korobkin 2004). 3D experimental context:
+//     Campbell & Weynberg (1980, as in DNV-RP-C205) Cs = 5.15/(1 + 19 s/D) + 0.55 s/D.
 //  §2 dam-break surge front Z = x/a against T = t·sqrt(2g/a): Martin & Moyce (1952) and
 //     Koshizuka & Oka (1996) tables.
 //  §5 cantilever plate (Gray, Monaghan & Swift 2001): thin-plate frequency and tip amplitude.
@@ -16,11 +18,35 @@
 namespace slamsph {
 
 // ---- §1 cylinder water entry ---------------------------------------------------------
-enum class SlammingTheory { CampbellWeynberg, VonKarman, Wagner };
+// Wagner = the parabola approximation (Cs = 2π); WagnerCircle and ModifiedLogvinovich use
+// the exact circle (formulas and derivation in reference_curves.cpp and docs/validation.md).
+enum class SlammingTheory {
+  CampbellWeynberg,
+  VonKarman,
+  Wagner,
+  WagnerCircle,
+  ModifiedLogvinovich
+};
 const char* slamming_theory_name(SlammingTheory th);  // "Campbell-Weynberg", ...
+// true for the 2D potential-flow theories; false for Campbell–Weynberg (a fit to
+// experiments on finite cylinders: 3D end effects and air).
+bool slamming_theory_is_2d(SlammingTheory th);
+// Every theory, in the order above.
+std::vector<SlammingTheory> all_slamming_theories();
 
-// Cs(s/D) of a theory. von Kármán is clamped at 0 beyond s/D = 0.5 (it is not valid there).
+// Cs(s/D) of a theory. von Kármán is clamped at 0 beyond s/D = 0.5 (it is not valid there);
+// WagnerCircle and ModifiedLogvinovich are NaN beyond full wetting, s/R > 1 − 2/π (s/D > 0.1817).
 double slamming_coefficient(SlammingTheory th, double s_over_d);
+
+// Wagner's condition for the exact circle (generalised Wagner condition
+// ∫₀^{π/2} f(c sin θ) dθ = (π/2) s with f = R − sqrt(R² − x²)): s/R = 1 − (2/π) E(k),
+// k = c/R the wetted half-width; returns k for 0 ≤ s/R ≤ 1 − 2/π, NaN beyond.
+double wagner_circle_half_width(double s_over_r);
+// Largest s/R of the exact-circle Wagner solution (full wetting, k = 1): 1 − 2/π.
+double wagner_circle_max_s_over_r();
+// Modified Logvinovich model (Korobkin 2004) for the circle at constant speed: the zero of
+// the body pressure, x0/c (0 if the pressure is nowhere positive).
+double logvinovich_circle_pressure_zero(double s_over_r);
 // F = Cs ρ V² R [N/m].
 double slamming_force(SlammingTheory th, double s_over_d, double density, double velocity,
                       double radius);
