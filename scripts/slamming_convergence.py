@@ -10,13 +10,14 @@ Definitions (docs/validation.md §1):
   Filter: Cs at s/D = q is the mean of the raw Cs(t) over s/D in [q - 0.005, q + 0.005]
   (time average, trapezoidal). The window is fixed in s, so it is the same physical filter
   at every dx: 1 mm of submergence = 0.43 ms = 2.3 acoustic times R V / c0^2 at c0/V = 15.
-  Impulse: I = integral of Cs d(s/D) over s/D 0.02-0.25 (= impulse / (rho V R D)).
+  Impulse: I = integral of Cs d(s/D) over s/D 0.02-0.25 (= impulse / (rho V R D)), and
+  over 0.02-0.15, where the exact-circle Wagner and modified Logvinovich curves exist.
   Values at s/D beyond the first tank echo (s/D = 1.2 m V / ((c0 + V) D), minus the
   filter half-width) are not reported.
   Observed order p = ln(|f1 - f2| / |f2 - f3|) / ln 2 (f3 finest, refinement ratio 2);
   Roache's GCI of the finest grid = Fs |f3 - f2| / |f3| / (2^p - 1): Fs = 1.25 with
   p = min(p_obs, 2) if the three values are monotone and p_obs >= 0.5; otherwise Fs = 3
-  with p = 1 (flagged 'nm' or 'lo').
+  with p = 1 (flagged 'lo': monotone but p_obs < 0.5; 'nm': not monotone).
   Peak: the largest raw F, reported as a range over every run with its s/D, dx/s*
   (s* = R V^2 / c0^2, the end of the acoustic stage) and Mach number V/c0.
 """
@@ -30,6 +31,7 @@ R, RHO = D / 2, 1000.0
 HALF = 0.005
 STATIONS = [0.01, 0.025, 0.05, 0.1, 0.2, 0.3]
 WINDOW = (0.02, 0.25)
+WINDOW2 = (0.02, 0.15)  # where every 2D theory is defined (exact-circle Wagner: s/D <= 0.18)
 TANK = 1.2  # m: floor and side-wall echo path (cases/cylinder_constant_speed.toml)
 
 
@@ -67,8 +69,12 @@ def filtered(run, q):
     return mean_over(run, q - HALF, q + HALF)
 
 
-def impulse(run):
-    return mean_over(run, *WINDOW) * (WINDOW[1] - WINDOW[0])
+def impulse(run, w=WINDOW):
+    return mean_over(run, *w) * (w[1] - w[0])
+
+
+def impulse2(run):
+    return impulse(run, WINDOW2)
 
 
 def peak(run):
@@ -85,12 +91,11 @@ def gci(f1, f2, f3):
     eps = abs(e32) / abs(f3)
     if e32 == 0.0:
         return float("inf"), 0.0, ""
-    if e21 * e32 > 0 and abs(e21) > abs(e32):
-        p = math.log(abs(e21) / abs(e32)) / math.log(2)
+    p = math.log(abs(e21) / abs(e32)) / math.log(2) if e21 != 0 else float("nan")
+    if e21 * e32 > 0:  # monotone
         if p >= 0.5:
             return p, 1.25 * eps / (2 ** min(p, 2.0) - 1), ""
         return p, 3.0 * eps, "lo"
-    p = math.log(abs(e21) / abs(e32)) / math.log(2) if e21 != 0 else float("nan")
     return p, 3.0 * eps, "nm"
 
 
@@ -113,15 +118,15 @@ def ref_at(name, q):  # the references filtered with the same window, for like-w
     return sum(vals) / len(vals)
 
 
-def ref_impulse(name):
+def ref_impulse(name, w=WINDOW):
     acc, n = 0.0, 0
     for s, c in zip(ref_sd, ref[name]):
-        if WINDOW[0] <= s <= WINDOW[1]:
+        if w[0] <= s <= w[1]:
             if math.isnan(c):
                 return float("nan")
             acc += c
             n += 1
-    return acc / n * (WINDOW[1] - WINDOW[0])
+    return acc / n * (w[1] - w[0])
 
 
 def fmt(x, nd=3):
@@ -136,7 +141,7 @@ say(f"filter: mean over s/D +-{HALF}; impulse window s/D {WINDOW[0]}-{WINDOW[1]}
 # ---- per-run table ------------------------------------------------------------------
 with open(os.path.join(out, "runs.csv"), "w") as fh:
     fh.write("D/dx,c0/V," + ",".join(f"Cs(s/D={q})" for q in STATIONS) +
-             ",impulse Cs d(s/D) 0.02-0.25,peak Cs,peak s/D,dx/s*,Mach,echo s/D,wall [s],fluid steps\n")
+             ",impulse Cs d(s/D) 0.02-0.25,impulse 0.02-0.15,peak Cs,peak s/D,dx/s*,Mach,echo s/D,wall [s],fluid steps\n")
     for t in tags:
         r = runs[t]
         summ = open(os.path.join(out, t, "summary.json")).read()
@@ -144,7 +149,7 @@ with open(os.path.join(out, "runs.csv"), "w") as fh:
         steps = summ.split('"fluid_steps": ')[1].split(",")[0]
         pk = peak(r)
         fh.write(f"{r['ddx']},{r['mach']}," + ",".join(fmt(filtered(r, q), 4) for q in STATIONS) +
-                 f",{fmt(impulse(r), 5)},{pk[0]:.4f},{pk[1]:.4f},{pk[2]:.2f},{pk[3]:.4f},"
+                 f",{fmt(impulse(r), 5)},{fmt(impulse2(r), 5)},{pk[0]:.4f},{pk[1]:.4f},{pk[2]:.2f},{pk[3]:.4f},"
                  f"{r['echo']:.3f},{wall},{steps}\n")
 say("\nper run (runs.csv):")
 say(open(os.path.join(out, "runs.csv")).read().rstrip())
@@ -157,6 +162,7 @@ if len(series) >= 3:
     say(f"\nconvergence in dx at c0/V = 15, grids D/dx = {c['ddx']}, {m['ddx']}, {f['ddx']}:")
     quantities = [(f"Cs(s/D={q})", (lambda r, q=q: filtered(r, q))) for q in STATIONS]
     quantities.append(("impulse 0.02-0.25", impulse))
+    quantities.append(("impulse 0.02-0.15", impulse2))
     head = "quantity,D/dx=%d,D/dx=%d,D/dx=%d,observed order,GCI fine [%%],flag," % (
         c["ddx"], m["ddx"], f["ddx"]) + ",".join(ref_names)
     with open(os.path.join(out, "convergence.csv"), "w") as fh:
@@ -167,6 +173,8 @@ if len(series) >= 3:
             if name.startswith("Cs"):
                 q = float(name.split("=")[1].rstrip(")"))
                 refs = [ref_at(n, q) for n in ref_names]
+            elif name.endswith("0.15"):
+                refs = [ref_impulse(n, WINDOW2) for n in ref_names]
             else:
                 refs = [ref_impulse(n) for n in ref_names]
             row = [name] + [fmt(x, 4) for x in v] + [fmt(p, 2), fmt(100 * g, 1), flag] + \
@@ -183,11 +191,11 @@ for ddx in ddxs[-2:]:
     if len(sub) < 2:
         continue
     say(f"\nsound speed at D/dx = {ddx} (Cs filtered; n/a = after the tank echo):")
-    say("c0/V," + ",".join(f"s/D={q}" for q in STATIONS) + ",impulse,peak Cs (s/D)")
+    say("c0/V," + ",".join(f"s/D={q}" for q in STATIONS) + ",impulse 0.02-0.25,impulse 0.02-0.15,peak Cs (s/D)")
     for r in sub:
         pk = peak(r)
         say(f"{r['mach']}," + ",".join(fmt(filtered(r, q)) for q in STATIONS) +
-            f",{fmt(impulse(r), 4)},{pk[0]:.2f} ({pk[1]:.3f})")
+            f",{fmt(impulse(r), 4)},{fmt(impulse2(r), 4)},{pk[0]:.2f} ({pk[1]:.3f})")
     spread = []
     for q in STATIONS:
         vals = [filtered(r, q) for r in sub]

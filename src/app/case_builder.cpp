@@ -132,6 +132,8 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.domain = num.domain;
   p.limiter_omega = cfg.fluid.limiter_omega;
   p.viscosity = cfg.fluid.viscosity;
+  p.cavitation_pressure = cfg.fluid.cavitation_pressure;
+  p.hydrostatic_correction = cfg.fluid.hydrostatic_correction;
   p.neighbour_skin = num.neighbour_skin;
 
   FsiSystem& s = out.system;

@@ -48,7 +48,10 @@ struct FsiParams {
   Box domain;                      // a particle leaving it is divergence [m]
   double limiter_omega = 3.0;      // low-dissipation limiter ω (spec §2) [-]
   double viscosity = 0.0;          // kinematic viscosity [m^2/s]
-  double neighbour_skin = 0.2;     // Verlet skin as a fraction of the contact support [-]
+  // Lowest contact star pressure before the water separates (docs/model.md §4) [Pa].
+  double cavitation_pressure = -101325.0;
+  bool hydrostatic_correction = true;  // static state in the Riemann U* (docs/model.md §2)
+  double neighbour_skin = 0.2;         // Verlet skin as a fraction of the contact support [-]
 };
 
 // The particle sets and their kernels, as the case builder lays them out.

@@ -1,5 +1,6 @@
 #include "app/probes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -72,7 +73,9 @@ std::vector<double> ProbeSet::row(const FsiStepper& st, const Executor& exec) co
     } else if (pc.kind == "body_pressure") {
       const Attached& a = attached_[k];
       const std::size_t s = sys.layout.offset[a.body] + a.particle;
-      row.push_back(sys.contact.wetted[s] ? sys.contact.p[s] : 0.0);
+      // The pressure the contact can apply there: not below the cavitation limit (§4).
+      const double p_cav = st.params().cavitation_pressure;
+      row.push_back(sys.contact.wetted[s] ? std::max(sys.contact.p[s], p_cav) : 0.0);
     } else if (pc.kind == "body_displacement") {
       const Attached& a = attached_[k];
       const SolidBody& b = sys.bodies[a.body];

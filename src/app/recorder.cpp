@@ -177,7 +177,7 @@ void Recorder::write_frame() {
     }
     std::vector<double> pv(body.size()), id(body.size()), set(body.size(), double(b + 1));
     for (std::size_t i = 0; i < body.size(); ++i) {
-      pv[i] = sys.contact.p[sys.layout.offset[b] + i];
+      pv[i] = std::max(sys.contact.p[sys.layout.offset[b] + i], cfg_.fluid.cavitation_pressure);
       id[i] = static_cast<double>(i);
     }
     bf.push_back({"contact_pressure", "Pa", 1, pv, {}});

@@ -17,6 +17,7 @@ struct ContactPairResult {
   Vec2 force;          // pressure force on fluid i, f_is = -2 V_i V_s p* grad_i W_is [N/m]
   Vec2 force_viscous;  // viscous force on fluid i (Morris, with the mirrored velocity) [N/m]
   double drho_term;    // V_s (v_i - v*) . grad_i W_is (continuity, times 2 rho_i outside)
+  double p_star;       // the star pressure that acts (after the cavitation limit) [Pa]
   bool active;         // false if the pair is outside the kernel support
 };
 
@@ -28,9 +29,11 @@ struct ContactPairInput {
   Vec2 g_rel;  // gravity minus the solid's acceleration (the static state of p', spec §4)
 };
 
+// p_min: the lowest star pressure the water sustains before it separates from the solid
+// (the fluid's cavitation_pressure, gauge, <= 0; 0 = no adhesion at all).
 template <bool kViscous>
 inline ContactPairResult contact_pair(const ContactPairInput& in, const Kernel& kernel, double c0,
-                                      double omega, double viscosity) {
+                                      double omega, double viscosity, double p_min = 0.0) {
   ContactPairResult out{};
   const Vec2 dx = in.xi - in.xs;
   const double r2 = norm2(dx);
@@ -44,14 +47,21 @@ inline ContactPairResult contact_pair(const ContactPairInput& in, const Kernel& 
   const RiemannState R{in.rhos, dot(in.vs, e), in.ps};
   const double dp_static = 0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);
   const RiemannStar s = solve_riemann(L, R, c0, omega, dp_static);
-  // No adhesion: a negative p* would pull water into the solid. Where a body moves away
-  // from the water faster than the water follows (the elastic gate swinging back), that
-  // attraction drew fluid particles through a five-particle-thick gate until the run
-  // diverged (docs/model.md §4). With p* >= 0 the water separates instead (a cavity at
-  // zero gauge pressure).
-  const double p_star = std::max(s.p, 0.0);
+  // Cavitation (docs/model.md §4): water holds suction down to p_min (about one atmosphere
+  // below ambient) and then separates from a receding solid instead of being pulled
+  // through it (without any limit, the elastic gate swinging back drew fluid particles
+  // through its five-particle-thick skin until the run diverged). Where the limit acts, the
+  // star state is that of a cavity at p_min: the fluid's interface velocity follows from
+  // the left acoustic wave, p* = p_L + rho_L c0 (U_L - U*), so the continuity term sees
+  // the same separation as the force (and never a faster interface than the unlimited U*).
+  double p_star = s.p, u_star = s.u;
+  if (p_star < p_min) {
+    p_star = p_min;
+    u_star = std::min(s.u, L.u + std::max(L.p - p_min, 0.0) / (L.rho * c0));
+  }
+  out.p_star = p_star;
   out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;
-  out.drho_term = in.Vs * (L.u - s.u) * (-dwr * r);
+  out.drho_term = in.Vs * (L.u - u_star) * (-dwr * r);
   if constexpr (kViscous) {
     const double eta2 = 0.01 * kernel.h() * kernel.h();
     // Morris et al. 1997 with mu = rho nu on both sides and the mirrored solid velocity.

@@ -17,6 +17,9 @@ struct ContactParams {
   double omega = 3.0;
   double viscosity = 0.0;  // kinematic [m^2/s]; no-slip viscous term only if > 0
   Vec2 gravity;            // [m/s^2], for the static state in the Riemann U* (riemann_solver.h)
+  // Lowest star pressure before the water separates (FluidConfig::cavitation_pressure).
+  double cavitation_pressure = -101325.0;
+  bool hydrostatic_correction = true;  // static state (g - a_s) . r in U*; false: none
 };
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,

@@ -20,6 +20,7 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
   const double eta2 = 0.01 * kernel.h() * kernel.h();  // Morris regulariser
   const double c0 = prm.c0, inv_c0 = 1.0 / prm.c0, omega = prm.omega;
   const Vec2 g = prm.gravity;
+  const Vec2 g_static = prm.hydrostatic_correction ? g : Vec2{};  // riemann_solver.h
   const Vec2* x = f.x.data();
   const Vec2* v = f.v.data();
   const double* rho = f.rho.data();
@@ -54,7 +55,7 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
         const double inv_sum = 1.0 / (rhoi + rhoj);
         const double du = uL - uR;
         const double beta = std::min(omega * std::max(du, 0.0), c0);
-        const double dp_static = 0.5 * (rhoi + rhoj) * dot(g, dx);
+        const double dp_static = 0.5 * (rhoi + rhoj) * dot(g_static, dx);
         const double us = (rhoi * uL + rhoj * uR + (pi - p[j] - dp_static) * inv_c0) * inv_sum;
         const double ps = (rhoj * pi + rhoi * p[j] + beta * rhoi * rhoj * du) * inv_sum;
         // (v_i - v*) . grad_i W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r, and for j

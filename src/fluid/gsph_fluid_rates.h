@@ -15,10 +15,11 @@
 namespace slamsph {
 
 struct GsphParams {
-  double c0 = 0.0;         // sound speed [m/s]
-  double omega = 3.0;      // low-dissipation limiter [-]
-  double viscosity = 0.0;  // kinematic viscosity [m^2/s]; 0 = inviscid
-  Vec2 gravity;            // [m/s^2]
+  double c0 = 0.0;                     // sound speed [m/s]
+  double omega = 3.0;                  // low-dissipation limiter [-]
+  double viscosity = 0.0;              // kinematic viscosity [m^2/s]; 0 = inviscid
+  Vec2 gravity;                        // [m/s^2]
+  bool hydrostatic_correction = true;  // static state rho g . r in U* (riemann_solver.h)
 };
 
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,

@@ -41,6 +41,12 @@ struct FluidConfig {
   double gamma = 7.0;          // Tait exponent [-]
   double limiter_omega = 3.0;  // low-dissipation limiter ω (spec §2) [-]
   double viscosity = 0.0;      // kinematic viscosity (0 = inviscid) [m^2/s]
+  // Lowest contact pressure p* (gauge) before the water separates from a solid (spec §4,
+  // docs/model.md §4): one atmosphere below ambient; 0 = no suction (no adhesion) [Pa].
+  double cavitation_pressure = -101325.0;
+  // Static-state (hydrostatic) term in the Riemann U* of fluid pairs and of the contact
+  // (docs/model.md §2): right at rest under gravity, wrong away from it (free fall).
+  bool hydrostatic_correction = true;
   std::vector<FluidBlockConfig> blocks;
 };
 

@@ -181,12 +181,17 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
   FluidConfig f;
   auto r = root.table("fluid", "a [fluid] table");
   if (!r) return f;
-  r->allow({"density", "sound_speed", "gamma", "limiter_omega", "viscosity", "block"});
+  r->allow({"density", "sound_speed", "gamma", "limiter_omega", "viscosity", "cavitation_pressure",
+            "hydrostatic_correction", "block"});
   f.density = num(*r, "density", positive("a positive density in kg/m^3"), 1000.0);
   f.sound_speed = num(*r, "sound_speed", positive("a positive sound speed in m/s"));
   f.gamma = num(*r, "gamma", {1.0, kInf, false, false, "a Tait exponent >= 1"}, 7.0);
   f.limiter_omega = num(*r, "limiter_omega", non_negative("a limiter factor >= 0"), 3.0);
   f.viscosity = num(*r, "viscosity", non_negative("a kinematic viscosity >= 0 in m^2/s"), 0.0);
+  f.cavitation_pressure =
+      num(*r, "cavitation_pressure",
+          {-kInf, 0.0, false, false, "a gauge pressure <= 0 in Pa (e.g. -101325)"}, -101325.0);
+  f.hydrostatic_correction = r->boolean("hydrostatic_correction").value_or(true);
   blocks = r->table_array("block", "[[fluid.block]] tables with min and max");
   for (const Reader& b : blocks) {
     b.allow({"min", "max", "surface"});

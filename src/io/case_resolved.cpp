@@ -93,6 +93,8 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "gamma = " << d(f.gamma) << "\n";
     o << "limiter_omega = " << d(f.limiter_omega) << "\n";
     o << "viscosity = " << d(f.viscosity) << "  # [m^2/s]\n";
+    o << "cavitation_pressure = " << d(f.cavitation_pressure) << "  # [Pa] gauge\n";
+    o << "hydrostatic_correction = " << b(f.hydrostatic_correction) << "\n";
     for (const auto& bl : f.blocks) {
       o << "\n[[fluid.block]]\n";
       box(o, bl.box);

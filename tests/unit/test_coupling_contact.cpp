@@ -160,8 +160,10 @@ TEST(CouplingContactPair, StarStateForceAndContinuityByHand) {
 }
 
 TEST(CouplingContactPair, NoAdhesionClipsNegativeStarPressure) {
-  // Today's rule (docs/model.md §4): p* = max(p*, 0), so a receding solid under suction
-  // exerts no pull: the pair force is exactly zero while the continuity term is not.
+  // cavitation_pressure = 0 (docs/model.md §4): p* = max(p*, 0), so a receding solid under
+  // suction exerts no pull; the continuity term sees the cavity at the fluid's own velocity
+  // (U* = U_L + max(p_L - 0, 0)/(rho c0) = U_L here), so it is zero too (issue 9: force and
+  // continuity limited consistently; before, the continuity term still felt the solid).
   const Kernel k(KernelType::WendlandC2, kH);
   ContactPairInput in{};
   in.xi = {0.0, 0.0};
@@ -176,7 +178,9 @@ TEST(CouplingContactPair, NoAdhesionClipsNegativeStarPressure) {
   ASSERT_TRUE(res.active);
   EXPECT_EQ(res.force.x, 0.0);
   EXPECT_EQ(res.force.y, 0.0);
-  EXPECT_NE(res.drho_term, 0.0);
+  EXPECT_EQ(res.drho_term, 0.0);
+  // With suction allowed (the default -101325 Pa) the same pair pulls.
+  EXPECT_LT(contact_pair<false>(in, k, 25.0, 3.0, 0.0, -101325.0).force.y, 0.0);
   // Outside the support: inactive.
   in.xs = {0.0, -2.0 * kH};
   EXPECT_FALSE((contact_pair<false>(in, k, 25.0, 3.0, 0.0).active));

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# Mutation check (issue 9): applies each deliberate breakage of the physics to a copy of the
+# source, builds it and runs the CI tests that guard the contact and the fluid; every
+# breakage must make at least one test fail. Prints a table (and writes OUT/mutations.csv).
+# Not part of CI (about 1-3 minutes per mutation on 2 cores).
+# Tests run per mutation (a fast, documented subset of scripts/test.sh): the unit tier, then
+# the verification tests listed in $VERIFY, stopping at the first failure.
+# Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+out=${1:-results/mutation_check}
+filter=${2:-.}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+work=$out/src_copy
+VERIFY=${VERIFY:-'^(Coupling\.|CylinderEntry\.|ContactPhysics\.|SlammingConstantSpeed\.|StillWater\.StaysHydrostaticAndAtRest)'}
+rm -rf "$work"
+git clone -q --local --no-hardlinks "$root" "$work"
+# The working tree's uncommitted changes are part of what is checked.
+(cd "$root" && git diff HEAD) | (cd "$work" && git apply --allow-empty 2>/dev/null || true)
+git -C "$work" add -A >/dev/null && git -C "$work" -c user.name=m -c user.email=m commit -qm base --allow-empty
+cmake -S "$work" -B "$work/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+# name | file | exact text | replacement  (the text must occur: a stale mutation is an error)
+python3 - "$work" > "$out/mutations.tsv" <<'PY'
+import sys
+M = [
+ ("suction: p* clamped at 0 again", "src/coupling/contact_pair.h",
+  "if (p_star < p_min) {", "if (p_star < 0.0) {"),
+ ("cavitation: continuity ignores the limit", "src/coupling/contact_pair.h",
+  "u_star = std::min(s.u, L.u + std::max(L.p - p_min, 0.0) / (L.rho * c0));", "(void)u_star;"),
+ ("static term switch ignored", "src/fluid/gsph_fluid_rates.cpp",
+  "prm.hydrostatic_correction ? g : Vec2{}", "g"),
+ ("sub-step averaged solid state: last sub-step instead", "src/coupling/substep_average.cpp",
+  "SLAMSPH_MUTATION_AVERAGE", "SLAMSPH_MUTATION_AVERAGE"),
+ ("impact-pressure set-up warning removed", "src/app/setup_warnings.cpp",
+  "SLAMSPH_MUTATION_IMPACT", "SLAMSPH_MUTATION_IMPACT"),
+ ("fluid pressure-diffusion term deleted", "src/fluid/gsph_fluid_rates.cpp",
+  "(pi - p[j] - dp_static) * inv_c0", "0.0 * (pi - p[j] - dp_static) * inv_c0"),
+ ("fluid limiter: full acoustic dissipation", "src/fluid/gsph_fluid_rates.cpp",
+  "const double beta = std::min(omega * std::max(du, 0.0), c0);", "const double beta = c0 + 0.0 * omega * du;"),
+ ("contact force sign flipped", "src/coupling/contact_pair.h",
+  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;", "out.force = (2.0 * in.Vi * in.Vs * p_star * dwr) * dx;"),
+ ("ghost layers removed", "src/coupling/ghost_layers.cpp",
+  "  if (X.empty()) return out;", "  return out;"),
+ ("contact force halved", "src/coupling/contact_pair.h",
+  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;", "out.force = (-1.0 * in.Vi * in.Vs * p_star * dwr) * dx;"),
+ ("no Riemann dissipation in the contact", "src/coupling/contact_pair.h",
+  "solve_riemann(L, R, c0, omega, dp_static);", "solve_riemann(L, R, c0, 0.0 * omega, dp_static);"),
+ ("no (g - a) term in the virtual pressure", "src/coupling/virtual_pressure.cpp",
+  "dot(gravity - c.a[s], sum_rrw)", "0.0 * dot(gravity - c.a[s], sum_rrw)"),
+ ("contact static term sign flipped", "src/coupling/contact_pair.h",
+  "const double dp_static = 0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);",
+  "const double dp_static = -0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);"),
+ ("fluid j-side continuity doubled", "src/fluid/gsph_fluid_rates.cpp",
+  "drho[j] -= Vi * (us - uR) * dwr_r;", "drho[j] -= 2.0 * Vi * (us - uR) * dwr_r;"),
+]
+for name, f, a, b in M:
+    print("\t".join([name, f, a, b]))
+PY
+
+printf "%-55s | %-8s | %s\n" "breakage" "result" "first failing test" | tee "$out/table.txt"
+echo "breakage,result,first failing test,seconds" > "$out/mutations.csv"
+all_caught=1
+while IFS=$'\t' read -r name file text repl; do
+  [[ "$name" =~ $filter ]] || continue
+  git -C "$work" checkout -q -- .
+  t0=$SECONDS
+  if ! python3 - "$work/$file" "$text" "$repl" <<'PY'
+import sys
+p, a, b = sys.argv[1:]
+try:
+    s = open(p).read()
+except FileNotFoundError:
+    sys.exit(1)
+if a not in s or a == b:
+    sys.exit(1)
+open(p, "w").write(s.replace(a, b, 1))
+PY
+  then
+    printf "%-55s | %-8s | %s\n" "$name" "STALE" "mutation text not found in $file" | tee -a "$out/table.txt"
+    echo "\"$name\",stale,,0" >> "$out/mutations.csv"
+    all_caught=0
+    continue
+  fi
+  if ! cmake --build "$work/build" -j2 >"$out/build.log" 2>&1; then
+    result="caught"; first="(does not build)"
+  else
+    first=""
+    if ! (cd "$work/build" && ctest -L unit --stop-on-failure --timeout 300 >"$out/unit.log" 2>&1); then
+      first=$(grep -m1 -E "\*\*\*Failed|\(Failed\)|\*\*\*Timeout|\*\*\*Exception" "$out/unit.log" | sed -E 's/.*Test +#[0-9]+: ([^ ]+).*/\1/')
+    elif ! (cd "$work/build" && ctest -R "$VERIFY" --stop-on-failure --timeout 600 >"$out/verify.log" 2>&1); then
+      first=$(grep -m1 -E "\*\*\*Failed|\(Failed\)|\*\*\*Timeout|\*\*\*Exception" "$out/verify.log" | sed -E 's/.*Test +#[0-9]+: ([^ ]+).*/\1/')
+    fi
+    if [[ -n "$first" ]]; then result="caught"; else result="MISSED"; all_caught=0; fi
+  fi
+  printf "%-55s | %-8s | %s\n" "$name" "$result" "$first" | tee -a "$out/table.txt"
+  echo "\"$name\",$result,$first,$((SECONDS - t0))" >> "$out/mutations.csv"
+done < "$out/mutations.tsv"
+git -C "$work" checkout -q -- .
+[[ $all_caught -eq 1 ]] && echo "every breakage caught" || { echo "some breakage NOT caught"; exit 1; }
