@@ -134,6 +134,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.viscosity = cfg.fluid.viscosity;
   p.cavitation_pressure = cfg.fluid.cavitation_pressure;
   p.hydrostatic_correction = cfg.fluid.hydrostatic_correction;
+  p.substep_average = num.substep_average;
   p.neighbour_skin = num.neighbour_skin;
 
   FsiSystem& s = out.system;

@@ -18,6 +18,7 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
   lists_ =
       std::make_unique<InteractionLists>(sys_.kernel_f.support(), sys_.kernel_c.support(), skin);
   loads_.assign(sys_.bodies.size(), BodyLoad{});
+  averages_.assign(sys_.bodies.size(), SubstepAverage{});
   evaluate_rates();
 }
 
@@ -26,6 +27,8 @@ void FsiStepper::evaluate_rates() {
   FluidParticles& fluid = sys_.fluid;
   ContactParticles& contact = sys_.contact;
   gather_body_state(contact, sys_.layout, sys_.bodies);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    apply_substep_average(contact, sys_.layout, b, averages_[b]);
   lists_->update(fluid, contact, exec_);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};
@@ -81,7 +84,12 @@ void FsiStepper::step() {
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos.pressure(f.rho[i]);
   });
+  const bool average = prm_.substep_average && !dual_.bodies_share_step(f.size());
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
   solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity, exec_);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], dt);
   time_ += dt;
   evaluate_rates();
   dual_.correct(sys_.bodies, dt);

@@ -30,6 +30,7 @@
 #include "coupling/contact_layout.h"
 #include "coupling/contact_particles.h"
 #include "coupling/interaction_lists.h"
+#include "coupling/substep_average.h"
 #include "fluid/fluid_particles.h"
 #include "fluid/tait_eos.h"
 #include "solid/solid_body.h"
@@ -51,7 +52,10 @@ struct FsiParams {
   // Lowest contact star pressure before the water separates (docs/model.md §4) [Pa].
   double cavitation_pressure = -101325.0;
   bool hydrostatic_correction = true;  // static state in the Riemann U* (docs/model.md §2)
-  double neighbour_skin = 0.2;         // Verlet skin as a fraction of the contact support [-]
+  // The fluid sees sub-cycled bodies' velocity and acceleration averaged over the fluid step
+  // (coupling/substep_average.h) instead of those of the last sub-step.
+  bool substep_average = true;
+  double neighbour_skin = 0.2;  // Verlet skin as a fraction of the contact support [-]
 };
 
 // The particle sets and their kernels, as the case builder lays them out.
@@ -116,6 +120,7 @@ class FsiStepper {
   std::unique_ptr<InteractionLists> lists_;
   DualTimeStepping dual_;
   std::vector<BodyLoad> loads_;
+  std::vector<SubstepAverage> averages_;  // per body
   StepLimit limit_;
   double time_ = 0.0;
   long steps_ = 0;

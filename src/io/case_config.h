@@ -25,6 +25,7 @@ struct NumericsConfig {
   double end_time = 0.0;           // [s] (required)
   Vec2 gravity{0.0, -9.81};        // [m/s^2]
   double neighbour_skin = 0.2;     // Verlet skin as a fraction of the kernel support [-]
+  bool substep_average = true;     // fluid sees sub-step averaged body kinematics (spec §6)
   bool dual_time_stepping = true;  // sub-cycle solids inside a fluid step (spec §6)
   double dt_floor = 1e-9;          // a step below this is divergence [s]
   Box domain;                      // a particle leaving this box is divergence [m] (required)

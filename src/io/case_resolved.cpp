@@ -81,6 +81,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
   o << "gravity = " << v2(n.gravity) << "  # [m/s^2]\n";
   o << "neighbour_skin = " << d(n.neighbour_skin) << "\n";
   o << "dual_time_stepping = " << b(n.dual_time_stepping) << "\n";
+  o << "substep_average = " << b(n.substep_average) << "\n";
   o << "dt_floor = " << d(n.dt_floor) << "  # [s]\n\n";
   o << "[numerics.domain]\n";
   box(o, n.domain);
