@@ -222,7 +222,7 @@ with open(os.path.join(out, "cs_filtered.csv"), "w") as fh:
 open(os.path.join(out, "report.txt"), "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 
-gp = ["set terminal pngcairo size 1100,700", "set output 'cs_vs_sD.png'",
+gp = ["set terminal pngcairo size 1100,700 noenhanced", "set output 'cs_vs_sD.png'",
       "set datafile separator ','", "set datafile missing ''",
       "set xlabel 's/D'", "set ylabel 'Cs = F / (rho V^2 R)'", "set grid", "set xrange [0:0.36]",
       "set yrange [0:7]", "set key top right",
