@@ -231,9 +231,11 @@ plots = []
 for i, t in enumerate(tags):
     if runs[t]["mach"] == 15 or runs[t]["ddx"] == max(r["ddx"] for r in runs.values()):
         plots.append(f"'cs_filtered.csv' using 1:{i + 2} with lines lw 2 title 'SPH D/dx={runs[t]['ddx']} c0/V={runs[t]['mach']}'")
+COLOURS = ["#d62728", "#000000", "#7f7f7f", "#2ca02c", "#1f3fbf"]
 for i, n in enumerate(ref_names):
     dim = "3D exp. fit" if n == "Campbell-Weynberg" else "2D"
-    plots.append(f"'references.csv' using 1:{i + 2} with lines dt {i + 2} lw 2 title '{n} ({dim})'")
+    plots.append(f"'references.csv' using 1:{i + 2} with lines dt {i + 2} lw 3 "
+                 f"lc rgb '{COLOURS[i % len(COLOURS)]}' title '{n} ({dim})'")
 gp.append("plot " + ", \\\n     ".join(plots))
 open(os.path.join(out, "cs_vs_sD.gp"), "w").write("\n".join(gp) + "\n")
 os.system(f"cd '{out}' && gnuplot cs_vs_sD.gp")
