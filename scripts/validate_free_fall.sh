@@ -46,7 +46,7 @@ for ddx in 20 40; do for r in 0.5 1.0; do run "$ddx" "$r"; done; done
 python3 - "$out" "$D" "$V0" "$G" <<'PY'
 import csv, math, os, sys
 out, D, V0, G = sys.argv[1], *map(float, sys.argv[2:])
-REF = {  # ../shared/validation/README.md §10 (x = t sqrt(g/D), y = penetration/D)
+REF = {  # docs/references.md §10 (x = t sqrt(g/D), y = penetration/D)
     ("0.5", "experiment"): [(0, 0.002), (0.100, 0.168), (0.277, 0.495), (0.378, 0.609),
                             (0.797, 1.068), (1.131, 1.220)],
     ("0.5", "BEM"): [(0.046, 0.088), (0.087, 0.159), (0.151, 0.263), (0.236, 0.405),

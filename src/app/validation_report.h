@@ -1,5 +1,5 @@
-// Comparison of a finished run with the reference numbers of ../shared/validation
-// (README §1 cylinder entry, §2 dam break, §5 plate), chosen by the case's output.plot.
+// Comparison of a finished run with the reference numbers of docs/references.md
+// (§1 cylinder entry, §2 dam break, §5 plate), chosen by the case's output.plot.
 // Reads the CSVs the run wrote, so `slamsph plot DIR` can redo it.
 #pragma once
 #include <string>

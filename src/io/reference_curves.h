@@ -1,4 +1,4 @@
-// Reference curves and validation metrics from docs ../shared/validation/README.md:
+// Reference curves and validation metrics from docs/references.md:
 //  §1/§11 cylinder water entry at constant speed: slamming coefficient Cs = F / (ρ V² R),
 //     submergence s = V t. 2D theories: von Kármán (1929) with the exact circle
 //     Cs = π(1 − s/R); Wagner (1932) with the parabola, Cs = 2π; Wagner with the exact

@@ -1,4 +1,4 @@
-// Reference curves against the tables of ../shared/validation/README.md (§1, §2, §5, §6).
+// Reference curves against the tables of docs/references.md (§1, §2, §5, §6).
 #include <gtest/gtest.h>
 
 #include <cmath>
