@@ -118,7 +118,13 @@ bool segments_meet(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
 }
 
 std::string vec_text(Vec2 v) {
-  return "[" + pretty(v.x) + ", " + pretty(v.y) + "]";
+  // Appended piece by piece: GCC 12 reports a false -Wrestrict for "[" + std::string here.
+  std::string s = "[";
+  s += pretty(v.x);
+  s += ", ";
+  s += pretty(v.y);
+  s += "]";
+  return s;
 }
 
 Vec2 vec(const Reader& r, std::string_view key, const std::string& expected,
