@@ -23,6 +23,8 @@ using case_detail::Reader;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Largest supported water-to-body spacing ratio (docs/model.md §4, tested at 1, 2, 4, 8).
+constexpr double kMaxSpacingRatio = 8.0;
 
 const std::vector<std::string> kKernels{"wendland_c2", "cubic_spline"};
 // Body kinds and schemes: the one table of names in solid/body_kind.h.
@@ -343,9 +345,9 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
     r.bad("name", "unusable as a file name", name_rule, "\"" + b.name + "\"");
   if (b.name == "fluid") r.bad("name", "'fluid' names the water's files", name_rule, "\"fluid\"");
   b.kind = r.choice("kind", kKinds).value_or("elastic");
-  std::vector<std::string> keys{"name",      "kind",     "material",         "dx",
-                                "h_over_dx", "velocity", "angular_velocity", "gravity",
-                                "shape"};
+  std::vector<std::string> keys{"name",      "kind",          "material", "dx",
+                                "h_over_dx", "spacing_ratio", "velocity", "angular_velocity",
+                                "gravity",   "shape"};
   if (b.kind == "elastic")
     keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp"});
   else
@@ -355,6 +357,25 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
   r.allow(keys, "for a body of kind '" + b.kind + "'");
 
   b.dx = num(r, "dx", positive("a positive particle spacing in m"), c.numerics.dx);
+  // Water coarser than the structure (docs/model.md §4, "Bodies finer than the water"): the
+  // body spacing as a ratio to the water's, numerics.dx / dx, in [1, kMaxSpacingRatio].
+  const std::string ratio_rule = "a ratio numerics.dx / body dx in [1, " +
+                                 pretty(kMaxSpacingRatio) + "] (the water at most " +
+                                 pretty(kMaxSpacingRatio) + "x coarser than the body)";
+  if (r.has("spacing_ratio")) {
+    if (r.has("dx"))
+      r.bad("spacing_ratio", "give either dx or spacing_ratio, not both",
+            "spacing_ratio alone (body dx = numerics.dx / spacing_ratio)");
+    const double ratio = num(r, "spacing_ratio", {1.0, kMaxSpacingRatio, false, false, ratio_rule});
+    b.dx = c.numerics.dx / ratio;
+  } else if (!c.fluid.blocks.empty()) {
+    // An explicit dx must give a supported ratio too (1e-9: round-off of dx / ratio).
+    const double ratio = c.numerics.dx / b.dx;
+    r.check(ratio >= 1.0 - 1e-9 && ratio <= kMaxSpacingRatio * (1.0 + 1e-9), "dx",
+            "spacing ratio numerics.dx / dx = " + pretty(ratio) + " outside [1, " +
+                pretty(kMaxSpacingRatio) + "]",
+            ratio_rule, b.dx);
+  }
   b.h_over_dx =
       num(r, "h_over_dx", {1.0, 3.0, false, false, "a ratio h/dx in [1, 3]"}, c.numerics.h_over_dx);
   b.velocity = vec(r, "velocity", "velocities in m/s", Vec2{});

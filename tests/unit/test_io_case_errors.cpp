@@ -172,6 +172,32 @@ TEST(IoCaseErrors, NonPositiveDx) {
   expect_error(b, line_of(b, "dx = 0", 2), "body[1].dx", "must be > 0");
 }
 
+TEST(IoCaseErrors, SpacingRatioOutOfRange) {
+  // Water coarser than the body by 1-8x is supported (docs/model.md §4); outside is an error,
+  // whether given as spacing_ratio or through an explicit body dx.
+  for (const char* r : {"0.5", "9", "16"}) {
+    const std::string t =
+        replace_line(kBase, "name = \"cyl\"", std::string("name = \"cyl\"\nspacing_ratio = ") + r);
+    expect_error(t, line_of(t, "spacing_ratio"), "body[1].spacing_ratio", "must be in [1, 8]");
+  }
+  for (const char* dx : {"0.001", "0.02"}) {  // ratios 10 and 0.5
+    const std::string t =
+        replace_line(kBase, "name = \"cyl\"", std::string("name = \"cyl\"\ndx = ") + dx);
+    expect_error(t, line_of(t, "dx = ", 2), "body[1].dx", "spacing ratio numerics.dx / dx");
+  }
+  const std::string both =
+      replace_line(kBase, "name = \"cyl\"", "name = \"cyl\"\ndx = 0.005\nspacing_ratio = 2");
+  expect_error(both, line_of(both, "spacing_ratio"), "body[1].spacing_ratio", "not both");
+  // In range: the body spacing follows the water's.
+  for (double r : {1.0, 2.0, 4.0, 8.0}) {
+    const std::string t = replace_line(kBase, "name = \"cyl\"",
+                                       "name = \"cyl\"\nspacing_ratio = " + std::to_string(r));
+    EXPECT_DOUBLE_EQ(parse_case_string(t, "x").bodies[1].dx, 0.01 / r);
+  }
+  const std::string eight = replace_line(kBase, "name = \"cyl\"", "name = \"cyl\"\ndx = 0.00125");
+  EXPECT_EQ(error_of(eight), "(no error)");
+}
+
 TEST(IoCaseErrors, NonPositiveDensity) {
   const std::string t = replace_line(kBase, "density = 1100.0", "density = -1100.0");
   expect_error(t, line_of(t, "density"), "materials.rubber.density", "must be > 0");
