@@ -9,5 +9,5 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSLAMSPH_TESTS=OFF -DSLAMSPH_BEN
 cmake --build build --target slamsph -j"$(nproc)"
 case_file=${1:-cases/elastic_cylinder_entry.toml}
 name=$(basename "$case_file" .toml)
-./build/slamsph run "$case_file" --out "results/$name"
+./build/slamsph run "$case_file" --out "results/$name" --overwrite
 echo "Plots: results/$name/*.png, ParaView: results/$name/fields.pvd"

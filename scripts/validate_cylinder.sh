@@ -17,7 +17,7 @@ case_file=cases/elastic_cylinder_entry.toml
 run() {  # dx dual tag
   sed -e "s/^dx = 0.005 .*/dx = $1/" -e "s/^dual_time_stepping = true/dual_time_stepping = $2/" \
     "$case_file" > "$out/$3.toml"
-  ./build/slamsph run "$out/$3.toml" --out "$out/$3" --threads "$threads" --quiet
+  ./build/slamsph run "$out/$3.toml" --out "$out/$3" --overwrite --threads "$threads" --quiet
 }
 run 0.005 true dx5
 run 0.005 false dx5_global
@@ -65,7 +65,7 @@ PY
 sed -e 's/^centre = \[0.5, 0.5\]/centre = [0.5, 0.515]/' -e 's/^velocity = \[0.0, -2.33\]/velocity = [0.0, -2.265966]/' \
   -e 's/^h_over_dx = 1.3$/h_over_dx = 1.38/' -e 's/^end_time = 0.05 .*/end_time = 0.0566/' \
   -e 's/^interval = 0.0025/interval = 0.0005\nvtk = false/' "$case_file" > "$out/paper_2h.toml"
-./build/slamsph run "$out/paper_2h.toml" --out "$out/paper_2h" --threads "$threads" --quiet
+./build/slamsph run "$out/paper_2h.toml" --out "$out/paper_2h" --overwrite --threads "$threads" --quiet
 cmake --build build --target slamming_references -j2 >/dev/null
 ./build/slamming_references > "$out/references.csv"
 python3 scripts/paper_case_report.py "$out/paper_2h" "$out/references.csv"

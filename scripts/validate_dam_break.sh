@@ -14,7 +14,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target slamsph -j"$(nproc)" >/dev/null
 for spec in "25 0.02" "50 0.01" "100 0.005"; do
   set -- $spec
-  ./build/slamsph run cases/dam_break.toml --dx "$2" --out "$out/a_dx$1" --threads "$threads" \
+  ./build/slamsph run cases/dam_break.toml --dx "$2" --out "$out/a_dx$1" --overwrite --threads "$threads" \
     --quiet 2>/dev/null
 done
 

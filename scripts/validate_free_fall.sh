@@ -37,7 +37,7 @@ run() {  # D/dx density-ratio
   local t_start=$SECONDS
   # A run that diverges (exit 3, e.g. a splash leaving the domain) keeps its output up to
   # then; it is compared over the time it reached, and the report says so.
-  ./build/slamsph run "$out/$tag.toml" --out "$out/$tag" --threads "$threads" --quiet ||
+  ./build/slamsph run "$out/$tag.toml" --out "$out/$tag" --overwrite --threads "$threads" --quiet ||
     echo "  $tag: stopped early (exit $?), compared up to its last output"
   echo "  $tag: $((SECONDS - t_start)) s"
 }

@@ -9,7 +9,7 @@ threads=${1:-2}
 out=${2:-results/elastic_gate}
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target slamsph -j"$(nproc)" >/dev/null
-./build/slamsph run cases/elastic_gate.toml --out "$out" --threads "$threads" --quiet
+./build/slamsph run cases/elastic_gate.toml --out "$out" --overwrite --threads "$threads" --quiet
 python3 - "$out" <<'PY'
 import csv, json, sys
 out = sys.argv[1]

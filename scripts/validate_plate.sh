@@ -9,7 +9,7 @@ dx=${1:-0.0016666666666666668}
 out=${2:-results/oscillating_plate}
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target slamsph -j"$(nproc)" >/dev/null
-./build/slamsph run cases/oscillating_plate.toml --dx "$dx" --out "$out" --threads 1 --quiet
+./build/slamsph run cases/oscillating_plate.toml --dx "$dx" --out "$out" --overwrite --threads 1 --quiet
 python3 - "$out" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(f"{sys.argv[1]}/probes.csv")))

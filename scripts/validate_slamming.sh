@@ -38,7 +38,7 @@ run() {  # D/dx c0/V
     "$case_file" > "$out/$tag.toml"
   echo "run $tag (dx = $dx m, c0 = $c0 m/s) ..."
   local t_start=$SECONDS
-  ./build/slamsph run "$out/$tag.toml" --out "$out/$tag" --threads "$threads" --quiet
+  ./build/slamsph run "$out/$tag.toml" --out "$out/$tag" --overwrite --threads "$threads" --quiet
   echo "  $tag: $((SECONDS - t_start)) s"
 }
 

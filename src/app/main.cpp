@@ -1,8 +1,9 @@
 // slamsph command line: run | check | plot | help, parsed with CLI11 (Debian libcli11-dev):
 // every subcommand has its own --help listing each option and its default, options may
 // come before or after the case file, and --opt=value works as well as --opt value.
-// Exit codes: 0 ok, 1 internal error, 2 bad input (nothing computed), 3 diverged run
-// (outputs so far kept).
+// Exit codes: 0 ok, 1 internal error, 2 bad input (nothing computed; also an output folder
+// holding another run without --overwrite), 3 diverged run (outputs so far kept), 4 a file
+// or folder cannot be written (path and OS reason).
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "app/checkpoint.h"
+#include "app/output_folder.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
@@ -35,6 +37,7 @@ struct Request {
   std::vector<std::string> sets;
   std::string help_topic;
   bool no_output = false;
+  bool overwrite = false;
 };
 
 // "--threads" default text for the help: where the number comes from and its value now.
@@ -101,6 +104,9 @@ int run_or_check(const std::string& cmd, Request& req) {
     return 0;
   }
   opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
+  opt.overwrite = req.overwrite;
+  // Before any particle is built: a folder holding another run is refused (exit 2).
+  if (opt.write_output) OutputFolder::check_free(opt.out_dir, opt.overwrite);
   Simulation sim(std::move(cfg), opt);
   warn(sim);
   const int code = sim.run();
@@ -129,6 +135,7 @@ int resume_run(Request& req) {
     const int pc = plot_command(opt.out_dir, opt.quiet);
     if (pc != 0) std::fprintf(stderr, "warning: plotting failed (results are complete)\n");
   }
+  if (!opt.quiet) std::fprintf(stderr, "results in %s\n", opt.out_dir.c_str());
   return code;
 }
 
@@ -142,8 +149,10 @@ int dispatch(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 1 internal error, 2 bad input (the message names file, line "
-      "and key; nothing is written), 3 the run diverged (outputs so far are kept), 4 the "
-      "output folder cannot be written (path and OS reason).\n"
+      "and key; nothing is written; also an output folder holding another run without "
+      "--overwrite), 3 the run diverged (outputs so far are kept), 4 a file or folder "
+      "cannot be created or written (path and OS reason; summary.json says \"failed\" "
+      "when it can still be written).\n"
       "'slamsph help COMMAND' or 'slamsph COMMAND --help' lists a command's options.");
 
   CLI::App* run = app.add_subcommand("run", "Run a case and write its results");
@@ -171,6 +180,10 @@ int dispatch(int argc, char** argv) {
                   "OUT'; default: none)")
       ->check(kPositiveFinite)
       ->type_name("T");
+  run->add_flag("--overwrite", req.overwrite,
+                "Replace the results of a previous run in the output folder (removes only the "
+                "files slamsph wrote there, listed in its .slamsph_files); default: such a "
+                "folder is refused");
   run->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
   run->add_flag("--no-output", req.no_output,
                 "Write no files (benchmarks); default: write everything");

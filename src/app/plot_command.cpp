@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
+#include "app/output_folder.h"
 #include "app/validation_report.h"
 #include "core/error.h"
 #include "io/case_file.h"
@@ -41,14 +43,24 @@ int plot_command(const std::string& out_dir, bool quiet) {
       std::fprintf(stderr, "%s: the case has no output.plot; nothing to draw\n", out_dir.c_str());
     return 0;
   }
-  // Plots of a run that did not reach its end time must not pass for the case's result.
+  // Plots of a run that did not reach its end time must not pass for the case's result:
+  // the status is said in every plot's title and in the message.
   const std::string status = run_status(out_dir);
-  if (status != "completed" && !quiet)
-    std::fprintf(stderr,
-                 "warning: %s: the run is %s, not completed; the plots show an incomplete run\n",
-                 out_dir.c_str(), status.c_str());
+  PlotParams params = plot_params_for(cfg);
+  if (status != "completed") {
+    params.note = "INCOMPLETE RUN (" + status + "), not the case's result";
+    if (!quiet)
+      std::fprintf(stderr,
+                   "warning: %s: the run is %s, not completed; the plots show an incomplete run\n",
+                   out_dir.c_str(), status.c_str());
+  }
+  // The plots are the run's files too (--overwrite removes them with the rest).
+  std::optional<OutputFolder> folder;
+  if (OutputFolder::holds_run(out_dir)) folder.emplace(out_dir, OutputFolder::Mode::Continue);
   std::string message;
-  const int code = plot_results(out_dir, cfg.output.plot, plot_params_for(cfg), message);
+  const int code = plot_results(out_dir, cfg.output.plot, params, message);
+  if (folder) folder->record();
+  if (status != "completed" && code == 0) message += " [INCOMPLETE RUN: " + status + "]";
   if (code != 0 || !quiet)
     std::fprintf(stderr, "%s%s\n", code == 0 ? "" : "plot: ", message.c_str());
   return code;

@@ -1,15 +1,15 @@
 #include "app/recorder.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <system_error>
 #include <type_traits>
 
+#include "app/output_folder.h"
 #include "app/validation_report.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "io/atomic_file.h"
 #include "io/case_file.h"
 #include "io/csv_writer.h"
 #include "io/json_writer.h"
@@ -33,7 +33,8 @@ Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiSteppe
 
 Recorder::~Recorder() = default;
 
-void Recorder::start(const RecorderResume* resume) {
+void Recorder::start(std::vector<std::string> warnings, const RecorderResume* resume) {
+  warnings_ = std::move(warnings);
   const std::vector<SolidBody>& bodies = st_.system().bodies;
   // A resumed run continues each file from its size at the checkpoint.
   auto csv = [&](const std::string& name, const std::vector<std::string>& headers) {
@@ -46,17 +47,20 @@ void Recorder::start(const RecorderResume* resume) {
   };
   if (opt_.write_output) {
     const std::string& dir = opt_.out_dir;
-    std::filesystem::create_directories(dir);
+    if (!resume) OutputFolder::check_free(dir, opt_.overwrite);
+    folder_ = std::make_unique<OutputFolder>(
+        dir, resume ? OutputFolder::Mode::Continue : OutputFolder::Mode::Fresh);
+    std::vector<std::string> names{"summary.json", "case.resolved.toml", "probes.csv"};
+    if (!bodies.empty()) names.insert(names.end(), {"forces.csv", "bodies.csv"});
+    if (cfg_.output.vtk) names.insert(names.end(), {"vtk/", "fields.pvd"});
+    if (opt_.checkpoint_interval > 0.0) names.push_back("checkpoints/");
+    folder_->record(names);
+    RunStatus running;
+    running.running = true;
+    write_summary(running);
     CaseConfig resolved = cfg_;  // a resumed run keeps the first run's --set notes
     if (resume) resolved.overrides = resume->case_overrides;
-    {
-      std::ofstream f(dir + "/case.resolved.toml");
-      f << resolved_case_toml(resolved);
-      f.close();
-      if (!f)
-        throw std::system_error(errno ? errno : EIO, std::generic_category(),
-                                "cannot write " + dir + "/case.resolved.toml");
-    }
+    write_file_atomically(dir + "/case.resolved.toml", resolved_case_toml(resolved));
     const VtkOptions vo{cfg_.output.vtk_precision == "float64",
                         cfg_.output.vtk_compression == "zlib"};
     if (cfg_.output.vtk && resume && resume->vtk)
@@ -225,20 +229,32 @@ void Recorder::after_divergence() {
 }
 
 void Recorder::flush() {
-  if (forces_) forces_->flush();
-  if (probes_csv_) probes_csv_->flush();
-  if (bodies_csv_) bodies_csv_->flush();
+  std::optional<std::system_error> first;
+  auto attempt = [&](auto&& f) {
+    try {
+      f();
+    } catch (const std::system_error& e) {
+      if (!first) first = e;
+    }
+  };
+  for (CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get()})
+    if (w) attempt([&] { w->flush(); });
+  if (folder_) attempt([&] { folder_->record(); });
+  if (first) throw *first;
 }
 
-void Recorder::write_summary(const RunStatus& status,
-                             const std::vector<std::string>& warnings) const {
+void Recorder::write_summary(const RunStatus& status) const {
   const FsiSystem& sys = st_.system();
   const double wall = wall_before_ + status.wall_seconds;
   JsonObject summary;
   summary.set("case", cfg_.name);
   summary.set("version", std::string(SLAMSPH_VERSION));
   // "stopped": ended early on purpose (--max-steps); its peaks are not the case's peaks.
-  const std::string state = status.code != 0         ? "diverged"
+  // "running": written first, rewritten at the end; a folder left with it holds a run
+  // that was killed or is still going. "failed": the environment refused (exit 4).
+  const std::string state = status.running           ? "running"
+                            : status.code == 4       ? "failed"
+                            : status.code != 0       ? "diverged"
                             : status.signal != 0     ? "interrupted"
                             : status.stopped.empty() ? "completed"
                                                      : "stopped";
@@ -260,7 +276,7 @@ void Recorder::write_summary(const RunStatus& status,
   summary.set("thread_wait_policy", Executor::wait_policy());
   summary.set("neighbour_rebuilds", st_.lists().rebuilds());
   summary.set("leaked_particles", st_.leaked_particles());
-  summary.set("warnings", warnings);  // the set-up warnings printed before the run
+  summary.set("warnings", warnings_);  // the set-up warnings printed before the run
   std::vector<JsonObject> loads;
   for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
     JsonObject o;

@@ -23,6 +23,7 @@ namespace slamsph {
 
 class CsvWriter;
 class Executor;
+class OutputFolder;
 
 // A CSV file's state at a checkpoint: its name in the output folder, size and row count.
 struct CsvResume {
@@ -39,10 +40,11 @@ struct RecorderResume {
 };
 
 struct RunStatus {
-  int code = 0;         // 0 completed or stopped, 3 diverged
-  std::string failure;  // divergence message
-  std::string stopped;  // why a run with code 0 ended before end_time (--max-steps), else ""
-  int signal = 0;       // SIGINT/SIGTERM that stopped the run, else 0
+  bool running = false;  // the summary written at the start: status "running"
+  int code = 0;          // 0 completed or stopped, 3 diverged, 4 failed (environment error)
+  std::string failure;   // divergence message, or the path and OS reason of the failure
+  std::string stopped;   // why a run with code 0 ended before end_time (--max-steps), else ""
+  int signal = 0;        // SIGINT/SIGTERM that stopped the run, else 0
   double wall_seconds = 0.0;
 };
 
@@ -53,16 +55,23 @@ class Recorder {
   ~Recorder();
 
   // Creates the output folder and files (if output is on) and records the initial loads;
-  // with `resume`, continues the files of a checkpointed run instead.
-  void start(const RecorderResume* resume = nullptr);
+  // with `resume`, continues the files of a checkpointed run instead. In order: the
+  // folder is opened (a previous run refused unless RunOptions::overwrite, app/output_folder.h),
+  // the manifest lists the files about to be written, summary.json says "running", then
+  // case.resolved.toml and the series files. `warnings` go into every summary.json.
+  void start(std::vector<std::string> warnings, const RecorderResume* resume = nullptr);
   void before_step();
   void after_step();
   // The final probe and bodies rows and the last VTK frame of a completed run.
   void finish();
   // The state the run diverged in, as a VTK frame (unless that frame was just written).
   void after_divergence();
+  // Flushes every file and brings the manifest up to date. Throws std::system_error (the
+  // first failure) after trying every file.
   void flush();
-  void write_summary(const RunStatus& status, const std::vector<std::string>& warnings) const;
+  // summary.json, whole (temporary file and rename): status "running", "completed",
+  // "stopped", "interrupted", "diverged" or "failed" (RunStatus).
+  void write_summary(const RunStatus& status) const;
 
   // Checkpoint access (app/checkpoint.h). Call flush() first: the sizes are the files' now.
   std::vector<CsvResume> csv_state() const;
@@ -94,6 +103,8 @@ class Recorder {
   const FsiStepper& st_;
   const ProbeSet& probes_;
   const Executor& exec_;
+  std::unique_ptr<OutputFolder> folder_;
+  std::vector<std::string> warnings_;  // set-up warnings, for summary.json
   std::unique_ptr<VtkSeries> vtk_;
   std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_;
 

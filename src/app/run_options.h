@@ -13,6 +13,7 @@ struct RunOptions {
   std::optional<double> dx;          // fluid spacing override (bodies scale with it)
   bool quiet = false;                // no progress line, no banner
   bool write_output = true;          // false: no VTK/CSV (benchmarks)
+  bool overwrite = false;            // replace a previous run in out_dir (app/output_folder.h)
   double checkpoint_interval = 0.0;  // [s] simulated time between checkpoints; 0 = none
   double max_particles = 1e7;        // refuse a case estimated above this (app/case_checks.h)
 };

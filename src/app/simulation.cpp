@@ -6,6 +6,8 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <system_error>
 
 #include "app/case_builder.h"
 #include "app/case_checks.h"
@@ -73,14 +75,9 @@ double Simulation::probe_value(std::size_t k) const {
 int Simulation::run() {
   Recorder rec(cfg_, opt_, *stepper_, *probes_, exec_);
   CheckpointSchedule schedule{opt_.checkpoint_interval, opt_.checkpoint_interval};
-  if (!resume_from_.empty()) {
-    const RecorderResume resume =
-        read_checkpoint(resume_from_, cfg_, *stepper_, rec, schedule, exec_);
-    if (resume.vtk) remove_frames_from(opt_.out_dir, resume.vtk->frame);
-    rec.start(&resume);
-  } else {
-    rec.start();
-  }
+  std::optional<RecorderResume> resume;
+  if (!resume_from_.empty())
+    resume = read_checkpoint(resume_from_, cfg_, *stepper_, rec, schedule, exec_);
   const bool checkpoints = schedule.interval > 0.0 && opt_.write_output;
   long checkpoint_step = resume_from_.empty() ? -1 : steps();  // step of the last checkpoint
   const double end = cfg_.numerics.end_time;
@@ -88,15 +85,26 @@ int Simulation::run() {
   ProgressLine progress(end, !opt_.quiet);
   if (!isatty(STDERR_FILENO)) progress.set_plain(10.0);
   const auto t0 = std::chrono::steady_clock::now();
+  auto wall = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
   auto checkpoint = [&] {
     rec.flush();
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_checkpoint(opt_.out_dir, cfg_, *stepper_, rec, schedule, rec.wall_seconds(wall));
+    write_checkpoint(opt_.out_dir, cfg_, *stepper_, rec, schedule, rec.wall_seconds(wall()));
     checkpoint_step = steps();
   };
+  // CSV rows reach the disk at least every kFlushSeconds of wall time even when a step
+  // takes longer than that (the writers themselves flush only when a row arrives).
+  constexpr double kFlushSeconds = 2.0;
+  double last_flush = 0.0;
   RunStatus status;
   try {
+    if (resume) {
+      if (resume->vtk) remove_frames_from(opt_.out_dir, resume->vtk->frame);
+      rec.start(warnings_, &*resume);
+    } else {
+      rec.start(warnings_);
+    }
     while (time() < end * (1.0 - 1e-12)) {
       // Checkpoints are taken between steps, before the outputs due at this time.
       if (checkpoints && time() >= schedule.next - 1e-15) {
@@ -118,6 +126,10 @@ int Simulation::run() {
       stepper_->step();
       rec.after_step();
       progress.update(time(), steps(), last_step_limit().dt);
+      if (opt_.write_output && wall() - last_flush >= kFlushSeconds) {
+        rec.flush();
+        last_flush = wall();
+      }
     }
     // The end state, so that the run can be extended (slamsph resume --end-time).
     if (checkpoints && steps() != checkpoint_step) checkpoint();
@@ -126,27 +138,50 @@ int Simulation::run() {
     status.code = 3;
     status.failure = e.what();
     rec.after_divergence();  // keep the state the run diverged in
+  } catch (const std::system_error& e) {
+    // The environment refused (disk full, folder removed, permission): exit 4, and a
+    // "failed" summary if it can still be written.
+    status.code = 4;
+    status.failure = e.what();
   }
   progress.finish();
-  status.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  rec.flush();
-  rec.write_summary(status, warnings_);
+  status.wall_seconds = wall();
+  bool summary_written = false;
+  if (opt_.write_output) {
+    try {
+      rec.flush();
+    } catch (const std::system_error& e) {
+      if (status.code != 4) status.code = 4, status.failure = e.what();
+    }
+  }
+  try {
+    rec.write_summary(status);
+    summary_written = true;
+  } catch (const std::system_error& e) {
+    if (status.code != 4) status.code = 4, status.failure = e.what();
+  }
   if (!opt_.quiet) {
-    const double wall = status.wall_seconds;
-    const double ps = wall > 0.0 ? double(fluid().size()) * double(steps()) / wall : 0.0;
+    const double w = status.wall_seconds;
+    const double ps = w > 0.0 ? double(fluid().size()) * double(steps()) / w : 0.0;
     std::fprintf(stderr,
                  "%s: fluid particles: %zu, %ld fluid steps to t = %.6g s in %.2f s (%.4g "
                  "particle-steps/s, %d thread%s)\n",
-                 cfg_.name.c_str(), fluid().size(), steps(), time(), wall, ps, exec_.threads(),
+                 cfg_.name.c_str(), fluid().size(), steps(), time(), w, ps, exec_.threads(),
                  exec_.threads() == 1 ? "" : "s");
     if (!status.stopped.empty())
       std::fprintf(stderr, "stopped: %s; results are incomplete\n", status.stopped.c_str());
   }
-  if (status.code != 0) {
+  if (status.code == 3) {
     std::fprintf(stderr, "error: run diverged: %s\n", status.failure.c_str());
     if (opt_.write_output)
       std::fprintf(stderr, "outputs written so far are kept in %s\n", opt_.out_dir.c_str());
+  }
+  if (status.code == 4) {
+    std::fprintf(stderr, "error: %s\n", status.failure.c_str());
+    if (opt_.write_output)
+      std::fprintf(stderr, "the run failed; %s\n",
+                   summary_written ? "summary.json says \"failed\"; outputs so far are kept"
+                                   : "summary.json could not be written either");
   }
   completed_ = status.code == 0 && status.stopped.empty();
   if (status.code == 0 && status.signal) return 128 + status.signal;  // 130 SIGINT, 143 SIGTERM

@@ -3,11 +3,13 @@
 
 #include <filesystem>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
+#include <system_error>
 
 namespace slamsph {
 namespace {
@@ -24,6 +26,13 @@ void put_number(std::string& out, double v) {
   char buf[32];
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
+}
+
+// The environment refused (no such folder, permission, disk full): std::system_error with
+// the OS reason, which the command line reports as exit 4. iostreams keep errno from the
+// failing system call.
+[[noreturn]] void throw_os_error(const std::string& what) {
+  throw std::system_error(errno ? errno : EIO, std::generic_category(), what);
 }
 
 std::string quote_if_needed(const std::string& h) {
@@ -107,14 +116,16 @@ CsvWriter::CsvWriter(std::string path, std::vector<std::string> headers, std::si
     // written after the checkpoint, then append.
     std::error_code ec;
     std::filesystem::resize_file(path_, resume_->bytes, ec);
-    if (ec) throw std::runtime_error("cannot truncate " + path_ + ": " + ec.message());
+    if (ec) throw std::system_error(ec, "cannot truncate " + path_);
+    errno = 0;
     out_.open(path_, std::ios::out | std::ios::app | std::ios::binary);
-    if (!out_) throw std::runtime_error("cannot open " + path_ + " for writing");
+    if (!out_) throw_os_error("cannot open " + path_ + " for writing");
     rows_ = resume_->rows;
     return;
   }
+  errno = 0;
   out_.open(path_, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!out_) throw std::runtime_error("cannot open " + path_ + " for writing");
+  if (!out_) throw_os_error("cannot open " + path_ + " for writing");
   std::string line;
   for (std::size_t i = 0; i < headers_.size(); ++i) {
     if (i) line += ',';
@@ -122,11 +133,11 @@ CsvWriter::CsvWriter(std::string path, std::vector<std::string> headers, std::si
   }
   line += '\n';
   out_ << line;
-  out_.flush();
+  flush();
 }
 
 CsvWriter::~CsvWriter() {
-  if (out_.is_open()) out_.flush();
+  if (out_.is_open()) out_.flush();  // errors were reported by flush() calls before
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
@@ -152,8 +163,9 @@ void CsvWriter::row(const std::vector<double>& values) {
 }
 
 void CsvWriter::flush() {
+  errno = 0;
   out_.flush();
-  if (!out_) throw std::runtime_error("error writing " + path_);
+  if (!out_) throw_os_error("cannot write " + path_);
   rows_since_flush_ = 0;
   last_flush_ = std::chrono::steady_clock::now();
 }

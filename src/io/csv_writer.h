@@ -22,7 +22,7 @@ class CsvWriter {
  public:
   // Creates (truncates) `path`; its parent directory must exist. Throws
   // std::invalid_argument for a header without "[unit]" or duplicated headers,
-  // std::runtime_error if the file cannot be opened.
+  // std::system_error (path and OS reason) if the file cannot be opened or written.
   // Where a resumed run continues an existing file: its size and row count at a
   // checkpoint (taken right after flush()).
   struct Resume {

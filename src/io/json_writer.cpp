@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <variant>
 
+#include "io/atomic_file.h"
+
 namespace slamsph {
 
 struct JsonObject::Value {
@@ -216,11 +218,7 @@ std::string JsonObject::to_string(bool pretty) const {
 }
 
 void JsonObject::write_file(const std::string& path, bool pretty) const {
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f) throw std::runtime_error("cannot open " + path + " for writing");
-  f << to_string(pretty) << '\n';
-  f.close();
-  if (!f) throw std::runtime_error("error writing " + path);
+  write_file_atomically(path, to_string(pretty) + '\n');
 }
 
 }  // namespace slamsph

@@ -39,7 +39,8 @@ class JsonObject {
 
   // pretty: two-space indentation, one key per line, number arrays on one line.
   std::string to_string(bool pretty = true) const;
-  // Writes to_string(pretty) + "\n" to `path`; throws std::runtime_error on failure.
+  // Writes to_string(pretty) + "\n" to `path` via a temporary file and a rename (never
+  // half-written); throws std::system_error with the path and the OS reason on failure.
   void write_file(const std::string& path, bool pretty = true) const;
 
  private:

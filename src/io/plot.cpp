@@ -60,6 +60,13 @@ std::string gp_str(const std::string& s) {
   return r + "'";
 }
 
+// "set title ..." with PlotParams::note (an incomplete run) as a second line in red, so a
+// plot of a cut run cannot pass for the case's result.
+std::string set_title(const std::string& title, const PlotParams& p) {
+  if (p.note.empty()) return "set title " + gp_str(title) + "\n";
+  return "set title " + gp_str(title) + " . \"\\n\" . " + gp_str(p.note) + " textcolor rgb 'red'\n";
+}
+
 // POSIX shell single-quoted word.
 std::string sh_quote(const std::string& s) {
   std::string r = "'";
@@ -264,7 +271,7 @@ int plot_cylinder_entry(const std::string& out_dir, const PlotParams& p, const s
 
   std::string s = preamble("slamming_force.png") + common;
   s += "sd(tms) = V*tms*1e-3/D\n";
-  s += "set title " + gp_str("Cylinder water entry: " + hdr) + "\n";
+  s += set_title("Cylinder water entry: " + hdr, p);
   s += "set xlabel 'time since contact t - t0 [ms]'\nset ylabel 'vertical force Fy [N/m]'\n";
   s += "set x2label 'submergence s/D [-]'\nset x2tics\nset xtics nomirror\n";
   s += "set link x2 via V*x*1e-3/D inverse x*D/V*1e3\n";
@@ -282,7 +289,7 @@ int plot_cylinder_entry(const std::string& out_dir, const PlotParams& p, const s
   if (rc != kOk) return rc;
 
   s = preamble("slamming_coefficient.png") + common;
-  s += "set title " + gp_str("Slamming coefficient Cs = F/(rho V^2 R): " + hdr) + "\n";
+  s += set_title("Slamming coefficient Cs = F/(rho V^2 R): " + hdr, p);
   s += "set xlabel 'submergence s/D = V (t - t0)/D [-]'\nset ylabel 'Cs [-]'\n";
   s += "set xrange [0:*]\nset yrange [0:*]\n";
   s += "plot 'forces.csv' skip 1 using (V*($1 - t0)/D):(" + ycol + "/q)" +
@@ -335,7 +342,7 @@ int plot_dam_break(const std::string& out_dir, const PlotParams& p, const std::s
   std::string s = preamble("surge_front.png");
   s += "a = " + num(p.dam_width) + "\ng = " + num(p.gravity) + "\nx0 = " + num(p.wall_x) + "\n";
   s += datablock("MM", mm) + datablock("KO", ko);
-  s += "set title " + gp_str("Dam-break surge front (a = " + num(p.dam_width) + " m)") + "\n";
+  s += set_title("Dam-break surge front (a = " + num(p.dam_width) + " m)", p);
   s += "set xlabel 'T = t sqrt(2g/a) [-]'\nset ylabel 'Z = x/a [-]'\nset key top left box opaque\n";
   s += "set xrange [0:*]\n";
   s += "plot 'probes.csv' skip 1 using ($1*sqrt(2*g/a)):((column(" + std::to_string(col + 1) +
@@ -369,7 +376,7 @@ int plot_plate(const std::string& out_dir, const PlotParams& p, const std::strin
   std::vector<int> cols;
   if (!load_tip_columns(out_dir, p, csv, t, cols, message)) return kMissing;
   std::string s = preamble("plate_tip.png");
-  s += "set title 'Oscillating cantilever plate: tip displacement'\n";
+  s += set_title("Oscillating cantilever plate: tip displacement", p);
   s += "set xlabel 'time [s]'\nset ylabel 'tip displacement [mm]'\nset autoscale xfix\n";
   s += "set samples 1000\nplot " + tip_plot_lines(csv, t, cols);
   const bool ref = p.plate_omega > 0.0 && p.plate_amplitude > 0.0;
@@ -402,7 +409,7 @@ int plot_gate(const std::string& out_dir, const PlotParams& p, const std::string
   s += "$EXP << EOD\n" + num(tm) + "," + num(1e3 * ex.peak_dx) + "," + num(tw) + ",0\n" + num(tm) +
        "," + num(0.5e3 * (ex.peak_dy_min + ex.peak_dy_max)) + "," + num(tw) + "," +
        num(0.5e3 * (ex.peak_dy_max - ex.peak_dy_min)) + "\nEOD\n";
-  s += "set title 'Dam break through an elastic gate: tip displacement'\n";
+  s += set_title("Dam break through an elastic gate: tip displacement", p);
   s += "set key below\nset offsets 0, 0, 5, 5\n";
   s += "set xlabel 'time [s]'\nset ylabel 'tip displacement [mm]'\nset autoscale xfix\n";
   s += "plot " + tip_plot_lines(csv, t, cols) + ", \\\n";

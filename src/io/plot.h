@@ -43,6 +43,7 @@ struct PlotParams {
   double plate_omega = 0.0;         // plate: reference angular frequency [rad/s] (0 = none)
   double plate_amplitude = 0.0;     // plate: reference tip amplitude [m]
   std::string gnuplot = "gnuplot";  // executable name (searched in PATH) or path
+  std::string note;  // second title line of every plot (an incomplete run), "" = none
 };
 
 int plot_results(const std::string& out_dir, const std::string& kind, const PlotParams& p,

@@ -76,7 +76,7 @@ def check(ok, what):
 def run(binary, work, name, extra):
     out = os.path.join(work, name)
     cmd = [binary, "run", os.path.join(work, "readback.toml"), "--out", out, "--threads", "1",
-           "--quiet"] + extra
+           "--quiet", "--overwrite"] + extra
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode != 0:
         print(r.stderr)

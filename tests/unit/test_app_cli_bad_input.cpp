@@ -533,10 +533,14 @@ TEST_F(CliTest, SigintAndSigtermStopCleanly) {
     const std::string out = "out_" + sig;
     const std::string sh = "cd '" + work().string() + "' && ('" + SLAMSPH_BINARY +
                            "' run good.toml --out " + out +
-                           " --threads 1 --quiet --end-time 1000 & pid=$!; sleep 1.5; kill -" +
-                           sig + " $pid; wait $pid; echo $? > rc_" + sig + ".txt)";
+                           " --threads 1 --quiet --end-time 1000 & pid=$!; sleep 1.5; cp " + out +
+                           "/summary.json running_" + sig + ".json; kill -" + sig +
+                           " $pid; wait $pid; echo $? > rc_" + sig + ".txt)";
     ASSERT_EQ(std::system(sh.c_str()), 0);
     EXPECT_EQ(std::atoi(slurp(work() / ("rc_" + sig + ".txt")).c_str()), code);
+    // While the run is going, summary.json exists and says so.
+    const std::string running = slurp(work() / ("running_" + sig + ".json"));
+    EXPECT_NE(running.find("\"status\": \"running\""), std::string::npos) << running;
     const std::string s = slurp(work() / out / "summary.json");
     EXPECT_NE(s.find("\"status\": \"interrupted\""), std::string::npos) << s;
     EXPECT_NE(s.find("SIG" + sig + " received"), std::string::npos) << s;
@@ -560,6 +564,86 @@ TEST_F(CliTest, UnwritableOutputFolderExitsFourWithPathAndReason) {
   EXPECT_NE(r.err.find("/proc/slamsph_no_such_dir"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
+// Issue 12: a second run into the same --out silently left the previous run's frames and a
+// summary saying "completed" next to the new files. Now a folder holding a run is refused
+// (exit 2, naming the folder and --overwrite) and left as it was; --overwrite removes only
+// what slamsph wrote there (its manifest .slamsph_files), never the user's files.
+TEST_F(CliTest, FolderHoldingARunIsRefusedUnlessOverwriteWhichKeepsUserFiles) {
+  write_case("good.toml", kGood);
+  const std::string first = "run good.toml --out out --threads 1 --quiet --max-steps ";
+  ASSERT_EQ(run(first + "4").code, 0);
+  ASSERT_TRUE(fs::exists(work() / "out" / "vtk" / "fluid_00001.vtp"));
+  std::ofstream(work() / "out" / "notes.txt") << "mine";
+  std::ofstream(work() / "out" / "vtk" / "view.pvsm") << "mine too";
+  const std::string summary = slurp(work() / "out" / "summary.json");
+  const std::string manifest = slurp(work() / "out" / ".slamsph_files");
+  EXPECT_NE(manifest.find("\nvtk/fluid_00001.vtp\n"), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find("notes.txt"), std::string::npos) << manifest;
+
+  const CliResult again = run(first + "4");
+  EXPECT_EQ(again.code, 2) << again.err;
+  EXPECT_NE(again.err.find("error: out: "), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+  EXPECT_EQ(std::count(again.err.begin(), again.err.end(), '\n'), 1) << again.err;
+  EXPECT_EQ(slurp(work() / "out" / "summary.json"), summary) << "refused, yet changed";
+  // Bad input with --overwrite refuses before touching the previous results.
+  EXPECT_EQ(run(first + "4 --overwrite --set numerics.dx=-1").code, 2);
+  EXPECT_EQ(slurp(work() / "out" / "summary.json"), summary);
+  EXPECT_TRUE(fs::exists(work() / "out" / "vtk" / "fluid_00001.vtp"));
+
+  // Replaced by a run without VTK: no frame of the first run survives, the user's files do.
+  const CliResult r = run(first + "2 --overwrite --set output.vtk=false");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(work() / "out" / "vtk" / "fluid_00001.vtp"));
+  EXPECT_FALSE(fs::exists(work() / "out" / "fields.pvd"));
+  EXPECT_EQ(slurp(work() / "out" / "notes.txt"), "mine");
+  EXPECT_EQ(slurp(work() / "out" / "vtk" / "view.pvsm"), "mine too");
+  EXPECT_NE(slurp(work() / "out" / "summary.json").find("\"fluid_steps\": 2"), std::string::npos);
+
+  // A folder of an older slamsph (summary.json, no manifest) is a run too.
+  fs::create_directories(work() / "old");
+  std::ofstream(work() / "old" / "summary.json") << "{\"status\": \"completed\"}\n";
+  EXPECT_EQ(run("run good.toml --out old --threads 1 --max-steps 1 --quiet").code, 2);
+  EXPECT_EQ(run("run good.toml --out old --threads 1 --max-steps 1 --quiet --overwrite").code, 0);
+  // A folder with only the user's files is not a run: used as it is, files kept.
+  fs::create_directories(work() / "mine");
+  std::ofstream(work() / "mine" / "readme.txt") << "x";
+  EXPECT_EQ(run("run good.toml --out mine --threads 1 --max-steps 1 --quiet").code, 0);
+  EXPECT_EQ(slurp(work() / "mine" / "readme.txt"), "x");
+  EXPECT_EQ(slurp(work() / "mine" / ".slamsph_files").find("readme"), std::string::npos);
+}
+
+// Issue 12: a write failure in the middle of a run (disk full) or a CSV that cannot be
+// opened was an "internal error" (exit 1) with no summary. Now: exit 4, the path and the OS
+// reason, and summary.json says "failed" with the same reason. /dev/full stands in for a
+// full disk: every write to it fails with ENOSPC.
+TEST_F(CliTest, WriteFailuresMidRunExitFourWithAFailedSummary) {
+  write_case("good.toml", kGood);
+  fs::create_directories(work() / "full" / "vtk");
+  fs::create_symlink("/dev/full", work() / "full" / "vtk" / "fluid_00002.vtp");
+  const CliResult r = run("run good.toml --out full --threads 1 --max-steps 20 --quiet");
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("error: cannot write full/vtk/fluid_00002.vtp: No space left on device"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  std::string s = slurp(work() / "full" / "summary.json");
+  EXPECT_NE(s.find("\"status\": \"failed\""), std::string::npos) << s;
+  EXPECT_NE(s.find("No space left on device"), std::string::npos) << s;
+  EXPECT_TRUE(fs::exists(work() / "full" / "vtk" / "fluid_00001.vtp")) << "earlier frames kept";
+
+  fs::create_directories(work() / "csv" / "probes.csv");  // a folder where the CSV should go
+  const CliResult c = run("run good.toml --out csv --threads 1 --max-steps 2 --quiet");
+  EXPECT_EQ(c.code, 4) << c.err;
+  EXPECT_NE(c.err.find("cannot open csv/probes.csv for writing: Is a directory"), std::string::npos)
+      << c.err;
+  s = slurp(work() / "csv" / "summary.json");
+  EXPECT_NE(s.find("\"status\": \"failed\""), std::string::npos) << s;
+  // No half-written summary or resolved case under the final names.
+  EXPECT_FALSE(fs::exists(work() / "csv" / "summary.json.tmp"));
+  EXPECT_FALSE(fs::exists(work() / "csv" / "case.resolved.toml.tmp"));
 }
 
 // Issue 12: a valid negative Poisson ratio (auxetic foam) was refused, naming body[1].shape.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "io/csv_writer.h"
 #include "io/plot.h"
@@ -127,6 +128,35 @@ TEST(IoOutputPlot, DamBreakPlateGateAndGeneric) {
   ASSERT_EQ(plot_results(dir.string(), "gate", p, msg), 0) << msg;
   EXPECT_TRUE(is_png(dir / "gate_tip.png"));
   EXPECT_NE(msg.find("plate tip_dy [m] peak"), std::string::npos) << msg;
+
+  // Issue 12: a plot of an incomplete run carries that in its title (PlotParams::note);
+  // gnuplot accepts the two-line title (the PNG is drawn).
+  const std::string note = "INCOMPLETE RUN (stopped), not the case's result";
+  auto script = [&](const char* gp) {
+    std::ifstream in(dir / gp);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  EXPECT_EQ(script("gate_tip.gp").find("INCOMPLETE"), std::string::npos);
+  p.note = note;
+  fs::remove(dir / "gate_tip.png");
+  ASSERT_EQ(plot_results(dir.string(), "gate", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "gate_tip.png"));
+  EXPECT_NE(script("gate_tip.gp")
+                .find("set title 'Dam break through an elastic gate: tip "
+                      "displacement' . \"\\n\" . 'INCOMPLETE RUN (stopped), "
+                      "not the case''s result'"),
+            std::string::npos)
+      << script("gate_tip.gp");
+  for (const char* kind : {"dam_break", "plate"}) {
+    ASSERT_EQ(plot_results(dir.string(), kind, p, msg), 0) << msg;
+    EXPECT_NE(script(std::string(kind) == "plate" ? "plate_tip.gp" : "surge_front.gp")
+                  .find("INCOMPLETE RUN"),
+              std::string::npos)
+        << kind;
+  }
+  p.note.clear();
 
   ASSERT_EQ(plot_csv_columns(dir.string(), "bodies.csv", {"plate ke [J/m]"}, "energy.png",
                              "gnuplot", msg),
