@@ -12,10 +12,12 @@
 #   libbenchmark-dev           kernels' micro-benchmarks (bench/)
 #   clang-format               the format check
 #   python3-vtk9               VTK's own reader, to read the VTK output back (ParaView's reader)
+#   calculix-ccx               independent finite-element reference (CalculiX) for the structural
+#                              verifications; scripts/calculix/ generates its inputs (validation only)
 set -euo pipefail
 pkgs=(g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev zlib1g-dev gnuplot-nox)
 if [ "${1:-}" = "--test" ]; then
-  pkgs+=(libgtest-dev libbenchmark-dev clang-format python3-vtk9)
+  pkgs+=(libgtest-dev libbenchmark-dev clang-format python3-vtk9 calculix-ccx)
 fi
 missing=()
 for p in "${pkgs[@]}"; do
