@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""Static plane-strain references computed with CalculiX for the structural verification
+(tests/verification/test_app_static_structures.cpp, docs/validation.md §5). Both bodies are
+free and loaded by self-equilibrated tractions, so no support condition (whose discrete
+position an SPH clamp only knows to ±dx/2) enters the comparison; ccx gets the symmetry
+conditions that remove the rigid modes without reactions.
+
+  t_joint: flange 200 x 10 mm (y in [-10, 0] mm), web 10 x 60 mm on its top centre;
+           rubber-like E 2 MPa, nu 0.3. Three-point bending through the joint: pressure
+           P/t_w on the web's top face (down), P/2 over 10 mm at each end of the flange's
+           bottom face (up), P = 0.1 N/m (small strain).
+  ring:    R/h = 20, h = 3 mm aluminium (E 67.5 GPa, nu 0.34), diametral compression by a
+           pressure on the outer face over +-10 deg around the top and the bottom, total
+           vertical force P = 2 p R_out sin(10 deg) = 1000 N/m each side.
+
+usage: scripts/calculix/static_cases.py OUT.csv [WORKDIR]
+Writes case,quantity,value (m): see QUANTITIES below; also the coarse-mesh values (half the
+elements each way), to show the reference has converged.
+"""
+import math
+import os
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ccx_mesh  # noqa: E402
+
+# T-joint (SI)
+TJ = dict(L=0.2, tf=0.01, tw=0.01, hw=0.06, patch=0.01, P=0.1, E=2.0e6, nu=0.3, rho=1000.0)
+# Ring (SI)
+RG = dict(h=0.003, r_over_h=20.0, alpha_deg=10.0, P=1000.0, E=67.5e9, nu=0.34, rho=2700.0)
+
+
+def t_joint(e, workdir, job):
+    m = ccx_mesh.Mesh()
+    L, tf, tw, hw, pw = TJ["L"], TJ["tf"], TJ["tw"], TJ["hw"], TJ["patch"]
+    xs = [-L / 2, -L / 2 + pw, -tw / 2, tw / 2, L / 2 - pw, L / 2]
+    faces = {"web_top": [], "ends": []}
+    nv = round(tf / e)
+    for a in range(len(xs) - 1):
+        x0, x1 = xs[a], xs[a + 1]
+        nu = round((x1 - x0) / e)
+        grid = ccx_mesh.add_block(m, lambda u, v: (x0 + (x1 - x0) * u, -tf + tf * v), nu, nv)
+        if a in (0, len(xs) - 2):  # bottom faces (S1) of the end patches
+            first = len(m.elements) - nu * nv
+            faces["ends"] += [first + k * nv + 1 for k in range(nu)]
+    nuw, nvw = round(tw / e), round(hw / e)
+    ccx_mesh.add_block(m, lambda u, v: (-tw / 2 + tw * u, hw * v), nuw, nvw)
+    first = len(m.elements) - nuw * nvw
+    faces["web_top"] = [first + k * nvw + nvw for k in range(nuw)]  # top faces (S3)
+    m.nsets["SYM"] = [n for n, (x, y) in m.nodes.items() if abs(x) < 1e-12]
+    m.nsets["FIX"] = [n for n, (x, y) in m.nodes.items() if abs(x) < 1e-12 and abs(y - hw) < 1e-12]
+    P = TJ["P"]
+    step = ["*STEP", "*STATIC", "*BOUNDARY", "SYM, 1, 1, 0.", "FIX, 2, 2, 0.", "*DLOAD"]
+    step += [f"{el}, P3, {P / tw:.12g}" for el in faces["web_top"]]
+    step += [f"{el}, P1, {P / 2 / pw:.12g}" for el in faces["ends"]]
+    step += ["*NODE PRINT, NSET=NALL", "U", "*END STEP"]
+    m.nsets["NALL"] = list(m.nodes)
+    ccx_mesh.write_inp(os.path.join(workdir, job + ".inp"), m,
+                       {"E": TJ["E"], "nu": TJ["nu"], "rho": TJ["rho"]}, step)
+    u = ccx_mesh.node_displacements(ccx_mesh.run_ccx(workdir, job))
+
+    def mean_uy(pred):
+        sel = [u[n][1] for n, (x, y) in m.nodes.items() if pred(x, y)]
+        return sum(sel) / len(sel)
+    ends = mean_uy(lambda x, y: abs(y + tf) < 1e-12 and abs(x) > L / 2 - pw - 1e-12)
+    top = mean_uy(lambda x, y: abs(y - hw) < 1e-12)
+    mid = mean_uy(lambda x, y: abs(y + tf) < 1e-12 and abs(x) < 1e-12)
+    root = mean_uy(lambda x, y: abs(y) < 1e-12 and abs(x) < 1e-12)
+    return {"web_top_minus_ends": top - ends, "flange_mid_minus_ends": mid - ends,
+            "web_top_minus_root": top - root}
+
+
+def ring(n_radial, n_theta, workdir, job):
+    h, R = RG["h"], RG["r_over_h"] * RG["h"]
+    r_in, r_out = R - h / 2, R + h / 2
+    mesh, grid = ccx_mesh.ring_mesh(r_in, r_out, n_radial, n_theta)
+    alpha = math.radians(RG["alpha_deg"])
+    dth = 2 * math.pi / n_theta
+    k_alpha = alpha / dth
+    if abs(k_alpha - round(k_alpha)) > 1e-9 or n_theta % 4:
+        raise SystemExit("ring mesh: patch edges must fall on element edges")
+    p = RG["P"] / (2 * r_out * math.sin(alpha))
+    # Element (a, b) spans theta in [b dth, (b+1) dth]; its outer face is S2 (nodes 2-3).
+    loaded = []
+    for b in range(n_theta):
+        mid = (b + 0.5) * dth
+        for centre in (math.pi / 2, 3 * math.pi / 2):
+            if abs(mid - centre) < alpha:
+                loaded.append((n_radial - 1) * n_theta + b + 1)
+    mesh.nsets["XSYM"] = [n for n, (x, y) in mesh.nodes.items() if abs(x) < 1e-9 * R]
+    mesh.nsets["YSYM"] = [n for n, (x, y) in mesh.nodes.items() if abs(y) < 1e-9 * R]
+    mesh.nsets["NALL"] = list(mesh.nodes)
+    step = ["*STEP", "*STATIC", "*BOUNDARY", "XSYM, 1, 1, 0.", "YSYM, 2, 2, 0.", "*DLOAD"]
+    step += [f"{el}, P2, {p:.12g}" for el in loaded]
+    step += ["*NODE PRINT, NSET=NALL", "U", "*END STEP"]
+    ccx_mesh.write_inp(os.path.join(workdir, job + ".inp"), mesh,
+                       {"E": RG["E"], "nu": RG["nu"], "rho": RG["rho"]}, step)
+    u = ccx_mesh.node_displacements(ccx_mesh.run_ccx(workdir, job))
+    mid_i = n_radial  # grid row of the mid-surface
+
+    def radial(j):
+        n = grid[mid_i][j % (2 * n_theta)]
+        x, y = mesh.nodes[n]
+        r = math.hypot(x, y)
+        return (u[n][0] * x + u[n][1] * y) / r
+    q = n_theta // 2  # grid columns per quarter turn (2 per element)
+    return {"horizontal_diameter_change": radial(0) + radial(2 * q),
+            "vertical_diameter_change": radial(q) + radial(3 * q)}
+
+
+def thin_ring_diameters():
+    """Thin ring, two opposite point loads P (Roark, table 9.2 case 1): the horizontal
+    diameter grows by (2/pi - 1/2) P R^3/(EI), the vertical one shrinks by (pi/4 - 2/pi)
+    P R^3/(EI); plane strain EI = E h^3/(12(1-nu^2))."""
+    h, R = RG["h"], RG["r_over_h"] * RG["h"]
+    EI = RG["E"] * h**3 / (12 * (1 - RG["nu"] ** 2))
+    c = RG["P"] * R**3 / EI
+    return c * (2 / math.pi - 0.5), -c * (math.pi / 4 - 2 / math.pi)
+
+
+def main():
+    out = sys.argv[1]
+    workdir = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(out) or ".",
+                                                                 "ccx_static")
+    os.makedirs(workdir, exist_ok=True)
+    rows = []
+    fine = t_joint(0.000625, workdir, "t_joint_fine")
+    coarse = t_joint(0.00125, workdir, "t_joint_coarse")
+    for k in fine:
+        rows.append(("t_joint", k, fine[k], coarse[k]))
+    n_theta = 720  # 0.5 deg elements: the 10 deg patch is 20 elements
+    fine = ring(4, n_theta, workdir, "ring_fine")
+    coarse = ring(2, n_theta // 2, workdir, "ring_coarse")
+    for k in fine:
+        rows.append(("ring", k, fine[k], coarse[k]))
+    dh, dv = thin_ring_diameters()
+    with open(out, "w") as f:
+        f.write("# scripts/calculix/static_cases.py: plane strain, CPE8; t_joint 0.625 mm elements "
+                "(coarse 1.25 mm), ring 4 x 720 (coarse 2 x 360)\n")
+        f.write(f"# thin ring, point loads: horizontal {dh:.6e} m, vertical {dv:.6e} m\n")
+        f.write("case,quantity,value,coarse\n")
+        for r in rows:
+            f.write(f"{r[0]},{r[1]},{r[2]:.9e},{r[3]:.9e}\n")
+    for r in rows:
+        print(f"{r[0]} {r[1]}: {r[2]:.6e} m (coarse {r[3]:.6e}, {100 * (r[3] / r[2] - 1):+.3f} %)")
+    print(f"thin ring (point loads): horizontal {dh:.6e}, vertical {dv:.6e}")
+
+
+if __name__ == "__main__":
+    main()
