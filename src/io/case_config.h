@@ -107,9 +107,14 @@ struct ProbeConfig {
   // "pressure" (kernel-weighted at position), "surge_front" (largest fluid x),
   // "water_height" (at x), "max_speed" (largest fluid particle speed),
   // "body_pressure" (attached to body surface near position),
-  // "body_displacement" (displacement of the body particle nearest position)
+  // "body_displacement" (displacement of the body particle nearest position);
+  // structural (app/probes.h): "body_strain", "body_stress" (at position),
+  // "body_max_strain", "keel_deflection", "ovalisation" (whole body), "shortening"
+  // (position → to), "midspan_deflection" (chord position → to, point at).
   std::string kind;
   Vec2 position;
+  Vec2 to;  // shortening, midspan_deflection: second end [m]
+  Vec2 at;  // midspan_deflection: the point whose deflection is measured [m]
   double x = 0.0;
   std::string body;
 };

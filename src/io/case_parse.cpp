@@ -37,8 +37,10 @@ std::vector<std::string> names_of(const Table& table) {
 const std::vector<std::string> kKinds = names_of(kBodyKindNames);
 const std::vector<std::string> kSchemes = names_of(kSolidSchemeNames);
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
-const std::vector<std::string> kProbeKinds{"pressure",  "surge_front",   "water_height",
-                                           "max_speed", "body_pressure", "body_displacement"};
+const std::vector<std::string> kProbeKinds{
+    "pressure",          "surge_front", "water_height",      "max_speed",       "body_pressure",
+    "body_displacement", "body_strain", "body_stress",       "body_max_strain", "keel_deflection",
+    "ovalisation",       "shortening",  "midspan_deflection"};
 const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
 const std::vector<std::string> kModels{"svk", "j2_linear_hardening"};
@@ -526,41 +528,72 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
            "gravity " + vec_text(c.numerics.gravity));
   if (o.plot == "dam_break" && c.fluid.blocks.empty())
     r->bad("plot", "the dam-break plot needs the water column", "a [[fluid.block]]");
+  // A body of the case (the error suggests the nearest name).
+  auto known_body = [&](const Reader& rr, std::string_view key,
+                        const std::string& name) -> const BodyConfig& {
+    std::vector<std::string> bnames;
+    for (const auto& b : c.bodies) {
+      if (b.name == name) return b;
+      bnames.push_back(b.name);
+    }
+    const std::string near = case_detail::nearest(name, bnames);
+    rr.bad(key, "unknown body" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
+           "the name of a [[body]]", "\"" + name + "\"");
+  };
   const auto probes = r->table_array("probe", "[[output.probe]] tables with name and kind");
   std::set<std::string> names;
   for (std::size_t i = 0; i < probes.size(); ++i) {
     const Reader& p = probes[i];
     ProbeConfig pc;
     pc.kind = p.choice("kind", kProbeKinds).value_or("");
-    if (pc.kind.empty())
-      p.missing("kind",
-                "one of 'pressure', 'surge_front', 'water_height', 'max_speed', "
-                "'body_pressure', 'body_displacement'");
+    if (pc.kind.empty()) {
+      std::string all;
+      for (const std::string& k : kProbeKinds) all += (all.empty() ? "'" : ", '") + k + "'";
+      p.missing("kind", "one of " + all);
+    }
     const std::string ctx = "for probe kind '" + pc.kind + "'";
+    const bool at_point = pc.kind == "body_pressure" || pc.kind == "body_displacement" ||
+                          pc.kind == "body_strain" || pc.kind == "body_stress";
+    const bool whole_body =
+        pc.kind == "body_max_strain" || pc.kind == "keel_deflection" || pc.kind == "ovalisation";
+    const bool two_points = pc.kind == "shortening" || pc.kind == "midspan_deflection";
+    const bool on_body = at_point || whole_body || two_points;
     if (pc.kind == "pressure") p.allow({"name", "kind", "position"}, ctx);
     if (pc.kind == "surge_front" || pc.kind == "max_speed") p.allow({"name", "kind"}, ctx);
     if (pc.kind == "water_height") p.allow({"name", "kind", "x"}, ctx);
-    const bool on_body = pc.kind == "body_pressure" || pc.kind == "body_displacement";
-    if (on_body) p.allow({"name", "kind", "body", "position"}, ctx);
+    if (at_point) p.allow({"name", "kind", "body", "position"}, ctx);
+    if (whole_body) p.allow({"name", "kind", "body"}, ctx);
+    if (pc.kind == "shortening") p.allow({"name", "kind", "body", "position", "to"}, ctx);
+    if (pc.kind == "midspan_deflection")
+      p.allow({"name", "kind", "body", "position", "to", "at"}, ctx);
     pc.name = p.string("name", "a probe name").value_or(pc.kind + "_" + std::to_string(i));
     if (pc.name.empty()) p.bad("name", "empty name", "a non-empty probe name");
     if (!file_safe_name(pc.name))
       p.bad("name", "unusable as a CSV column name",
             "a probe name of letters, digits, '_', '-', '.'", "\"" + pc.name + "\"");
-    // Column names in probes.csv: body_displacement writes <name>_x and <name>_y.
+    // Column names in probes.csv (app/probes.h): some kinds write several.
     std::vector<std::string> cols{pc.name};
     if (pc.kind == "body_displacement") cols = {pc.name + "_x", pc.name + "_y"};
+    if (pc.kind == "body_stress") cols = {pc.name + "_von_mises", pc.name + "_Pyy"};
+    if (pc.kind == "body_max_strain") cols = {pc.name, pc.name + "_X", pc.name + "_Y"};
+    if (pc.kind == "ovalisation") cols = {pc.name + "_dDv", pc.name + "_dDh"};
     for (const std::string& col : cols)
       if (col == "time" || col == "leaked_particles" || !names.insert(col).second)
         p.bad("name", "probes.csv column '" + col + "' clashes with another column",
               "a name no other probe column uses", "\"" + pc.name + "\"");
-    if (pc.kind == "pressure" || on_body) {
-      pc.position = vec(p, "position", "coordinates in m");
-      if (!box_inside({pc.position, pc.position}, c.numerics.domain))
-        p.bad("position", "outside the domain",
-              "a point inside numerics.domain " + box_text(c.numerics.domain),
-              vec_text(pc.position));
-    }
+    auto point = [&](std::string_view key) {
+      const Vec2 v = vec(p, key, "coordinates in m");
+      if (!box_inside({v, v}, c.numerics.domain))
+        p.bad(key, "outside the domain",
+              "a point inside numerics.domain " + box_text(c.numerics.domain), vec_text(v));
+      return v;
+    };
+    if (pc.kind == "pressure" || at_point || two_points) pc.position = point("position");
+    if (two_points) pc.to = point("to");
+    if (pc.kind == "midspan_deflection") pc.at = point("at");
+    if (two_points && norm(pc.to - pc.position) <= 0.0)
+      p.bad("to", "the same point as position", "a second point distinct from position",
+            vec_text(pc.to));
     if (pc.kind == "water_height") {
       pc.x = num(p, "x", any("an x coordinate in m"));
       const Box& d = c.numerics.domain;
@@ -571,17 +604,12 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
       const auto body = p.string("body", "the name of a [[body]]");
       if (!body) p.missing("body", "the name of a [[body]]");
       pc.body = *body;
-      bool found = false;
-      std::vector<std::string> bnames;
-      for (const auto& b : c.bodies) {
-        found = found || b.name == pc.body;
-        bnames.push_back(b.name);
-      }
-      if (!found) {
-        const std::string near = case_detail::nearest(pc.body, bnames);
-        p.bad("body", "unknown body" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
-              "the name of a [[body]]", "\"" + pc.body + "\"");
-      }
+      const BodyConfig& b = known_body(p, "body", pc.body);
+      const bool needs_elastic =
+          pc.kind == "body_strain" || pc.kind == "body_stress" || pc.kind == "body_max_strain";
+      if (needs_elastic && b.kind != "elastic")
+        p.bad("body", "probe kind '" + pc.kind + "' reads the strain or stress of an elastic body",
+              "the name of an elastic [[body]]", "\"" + pc.body + "\" (" + b.kind + ")");
     }
     o.probes.push_back(pc);
   }

@@ -283,6 +283,18 @@ std::optional<std::vector<long>> Reader::int_list(std::string_view key,
   return out;
 }
 
+std::optional<std::vector<double>> Reader::num_list(std::string_view key,
+                                                    const std::string& expected) const {
+  const toml::node* n = node(key);
+  if (!n) return std::nullopt;
+  const toml::array* a = n->as_array();
+  if (!a) bad(key, "wrong type", expected, type_name(*n));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < a->size(); ++i)
+    out.push_back(as_number(*a->get(i), key_path(key) + "[" + std::to_string(i) + "]", expected));
+  return out;
+}
+
 void Reader::missing(std::string_view key, const std::string& expected) const {
   fail(source_, line_, key_path(key), "missing required key", expected);
 }

@@ -79,6 +79,9 @@ class Reader {
                                                        const std::string& expected) const;
   std::optional<std::vector<long>> int_list(std::string_view key,
                                             const std::string& expected) const;
+  // Array of numbers (integers accepted); an element of another type names its index.
+  std::optional<std::vector<double>> num_list(std::string_view key,
+                                              const std::string& expected) const;
 
   [[noreturn]] void missing(std::string_view key, const std::string& expected) const;
   [[noreturn]] void bad(std::string_view key, const std::string& what, const std::string& expected,

@@ -201,10 +201,15 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "\n[[output.probe]]\n";
     o << "name = " << q(p.name) << "\n";
     o << "kind = " << q(p.kind) << "\n";
-    const bool on_body = p.kind == "body_pressure" || p.kind == "body_displacement";
-    if (p.kind == "pressure" || on_body) o << "position = " << v2(p.position) << "  # [m]\n";
+    const bool two_points = p.kind == "shortening" || p.kind == "midspan_deflection";
+    const bool at_point = p.kind == "body_pressure" || p.kind == "body_displacement" ||
+                          p.kind == "body_strain" || p.kind == "body_stress";
+    if (p.kind == "pressure" || at_point || two_points)
+      o << "position = " << v2(p.position) << "  # [m]\n";
+    if (two_points) o << "to = " << v2(p.to) << "  # [m]\n";
+    if (p.kind == "midspan_deflection") o << "at = " << v2(p.at) << "  # [m]\n";
     if (p.kind == "water_height") o << "x = " << d(p.x) << "  # [m]\n";
-    if (on_body) o << "body = " << q(p.body) << "\n";
+    if (!p.body.empty()) o << "body = " << q(p.body) << "\n";
   }
   return o.str();
 }

@@ -285,6 +285,29 @@ TEST(IoCaseErrors, ProbeNamesUnknownBody) {
   expect_error(t, line_of(t, "body = "), "output.probe[0].body", "unknown body");
 }
 
+// Structural probes (app/probes.h): strain and stress need an elastic body; two-point
+// probes need both points, distinct; keys of other kinds are refused.
+TEST(IoCaseErrors, StructuralProbes) {
+  const std::string rigid =
+      replace_line(replace_line(kBase, "kind = \"body_pressure\"", "kind = \"body_strain\""),
+                   "body = \"cyl\"", "body = \"tank\"");
+  expect_error(rigid, line_of(rigid, "body = \"tank\""), "output.probe[0].body",
+               "reads the strain or stress of an elastic body");
+  const std::string no_to =
+      replace_line(kBase, "kind = \"body_pressure\"", "kind = \"shortening\"");
+  expect_error(no_to, line_of(no_to, "[[output.probe]]"), "output.probe[0].to",
+               "missing required key");
+  const std::string same =
+      replace_line(no_to, "position = [0.5, 0.6]", "position = [0.5, 0.6]\nto = [0.5, 0.6]");
+  expect_error(same, line_of(same, "to = "), "output.probe[0].to", "the same point as position");
+  const std::string extra =
+      replace_line(kBase, "kind = \"body_pressure\"", "kind = \"keel_deflection\"");
+  expect_error(extra, line_of(extra, "position = [0.5, 0.6]"), "output.probe[0].position",
+               "for probe kind 'keel_deflection'");
+  const std::string outside = replace_line(same, "to = [0.5, 0.6]", "to = [5.0, 0.6]");
+  expect_error(outside, line_of(outside, "to = "), "output.probe[0].to", "outside the domain");
+}
+
 TEST(IoCaseErrors, NoParticles) {
   const std::string t = R"(schema_version = 1
 name = "empty"

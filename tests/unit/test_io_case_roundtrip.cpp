@@ -118,6 +118,8 @@ void expect_equal(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(p.name, q.name);
     EXPECT_EQ(p.kind, q.kind);
     EXPECT_SAME(p.position, q.position);
+    EXPECT_SAME(p.to, q.to);
+    EXPECT_SAME(p.at, q.at);
     EXPECT_SAME(p.x, q.x);
     EXPECT_EQ(p.body, q.body);
   }
@@ -204,6 +206,28 @@ position = [1.5, 1.3]
 [[output.probe]]
 kind = "water_height"
 x = 0.1
+[[output.probe]]
+name = "strain"
+kind = "body_max_strain"
+body = "skin"
+[[output.probe]]
+name = "column"
+kind = "shortening"
+body = "skin"
+position = [1.5, 1.3]
+to = [1.5, 1.7]
+[[output.probe]]
+name = "floor"
+kind = "midspan_deflection"
+body = "skin"
+position = [1.3, 1.5]
+to = [1.7, 1.5]
+at = [1.5, 1.5]
+[[output.probe]]
+name = "stress"
+kind = "body_stress"
+body = "skin"
+position = [1.5, 1.3]
 )";
 
 }  // namespace
