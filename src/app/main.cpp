@@ -14,11 +14,13 @@
 #include <vector>
 
 #include "app/checkpoint.h"
+#include "app/converge_command.h"
 #include "app/output_folder.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
 #include "app/stop_signal.h"
+#include "app/sweep_command.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "io/case_file.h"
@@ -214,6 +216,9 @@ int dispatch(int argc, char** argv) {
       ->required()
       ->type_name("DIR");
 
+  int study_code = 0;  // sweep and converge run inside app.parse and leave their exit code
+  CLI::App* studies[] = {add_sweep_command(app, study_code), add_converge_command(app, study_code)};
+
   CLI::App* help = app.add_subcommand("help", "Show the options of a command");
   help->add_option("command", req.help_topic, "run, check or plot")->type_name("COMMAND");
 
@@ -222,10 +227,10 @@ int dispatch(int argc, char** argv) {
   if (argc > 1 && argv[1][0] != '-') {
     const std::string first = argv[1];
     if (first != "run" && first != "check" && first != "plot" && first != "help" &&
-        first != "resume") {
+        first != "resume" && first != "sweep" && first != "converge") {
       std::fprintf(stderr,
-                   "error: command line: unknown command '%s'; expected run, resume, check, plot "
-                   "or help\n",
+                   "error: command line: unknown command '%s'; expected run, resume, check, plot, "
+                   "sweep, converge or help\n",
                    argv[1]);
       return 2;
     }
@@ -261,7 +266,7 @@ int dispatch(int argc, char** argv) {
       std::cout << app.get_formatter()->make_help(&app, "slamsph", CLI::AppFormatMode::Normal);
       return 0;
     }
-    for (CLI::App* s : {run, resume, check, plot})
+    for (CLI::App* s : {run, resume, check, plot, studies[0], studies[1]})
       if (s->get_name() == req.help_topic) {
         std::cout << s->help("slamsph");
         return 0;
@@ -270,6 +275,7 @@ int dispatch(int argc, char** argv) {
                  req.help_topic.c_str());
     return 2;
   }
+  if (studies[0]->parsed() || studies[1]->parsed()) return study_code;
   if (plot->parsed()) return plot_command(req.out_dir);
   if (resume->parsed()) return resume_run(req);
   return run_or_check(run->parsed() ? "run" : "check", req);

@@ -431,6 +431,25 @@ int plot_gate(const std::string& out_dir, const PlotParams& p, const std::string
 
 }  // namespace
 
+std::string gnuplot_preamble(const std::string& png, int width, int height) {
+  return preamble(png, width, height);
+}
+
+std::string gnuplot_quote(const std::string& s) {
+  return gp_str(s);
+}
+
+int run_gnuplot_script(const std::string& out_dir, const std::string& stem,
+                       const std::string& script, const std::string& gnuplot,
+                       std::string& message) {
+  const std::string gp = find_gnuplot(gnuplot);
+  if (gp.empty()) {
+    message = "plot: gnuplot (\"" + gnuplot + "\") not found";
+    return kNoGnuplot;
+  }
+  return run_script(out_dir, stem, script, gp, message);
+}
+
 std::string find_gnuplot(const std::string& name) {
   auto executable = [](const fs::path& f) {
     std::error_code ec;

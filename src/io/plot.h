@@ -55,6 +55,15 @@ int plot_csv_columns(const std::string& out_dir, const std::string& csv_name,
                      const std::vector<std::string>& columns, const std::string& png_name,
                      const std::string& gnuplot, std::string& message);
 
+// Building blocks for other plots (io/overlay_plot.h, app/snapshots.h): the common script
+// head (pngcairo, CSV separator, grid) for <png>; a gnuplot single-quoted string; writing
+// <out_dir>/<stem>.gp and running gnuplot in out_dir (gnuplot resolved by find_gnuplot),
+// with the return codes above (<stem>.png must appear).
+std::string gnuplot_preamble(const std::string& png, int width = 1000, int height = 700);
+std::string gnuplot_quote(const std::string& s);
+int run_gnuplot_script(const std::string& out_dir, const std::string& stem,
+                       const std::string& script, const std::string& gnuplot, std::string& message);
+
 // Full path of the gnuplot executable (name searched in PATH), or "" if not found.
 std::string find_gnuplot(const std::string& name = "gnuplot");
 
