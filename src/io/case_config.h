@@ -53,8 +53,9 @@ struct FluidConfig {
 
 struct MaterialConfig {
   std::string name;
-  // "svk" (St Venant–Kirchhoff) or "j2_linear_hardening" (with yield_stress and
-  // hardening_modulus), parsed into the typed model (solid/materials/material_law.h).
+  // "svk" (St Venant–Kirchhoff), "j2_linear_hardening" (with yield_stress and
+  // hardening_modulus) or "johnson_cook" (flow stress, EOS, heating, failure; optionally
+  // from a preset), parsed into the typed model (solid/materials/material_law.h).
   MaterialModel model = SvkModel{};
   double density = 0.0;         // [kg/m^3]
   double youngs_modulus = 0.0;  // [Pa]

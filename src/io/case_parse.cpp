@@ -13,6 +13,7 @@
 #include "io/case_file.h"
 #include "io/case_reader.h"
 #include "solid/body_kind.h"
+#include "solid/materials/material_presets.h"
 
 namespace slamsph {
 
@@ -43,7 +44,8 @@ const std::vector<std::string> kProbeKinds{
     "ovalisation",       "shortening",  "midspan_deflection"};
 const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
-const std::vector<std::string> kModels{"svk", "j2_linear_hardening"};
+const std::vector<std::string> kModels{"svk", "j2_linear_hardening", "johnson_cook"};
+const std::vector<std::string> kFailures{"none", "johnson_cook", "critical_plastic_strain"};
 
 // Value range of a number key. An open bound excludes the value itself.
 struct Rule {
@@ -221,6 +223,89 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
   return f;
 }
 
+std::string failure_name(FailureKind k) {
+  switch (k) {
+    case FailureKind::JohnsonCook:
+      return "johnson_cook";
+    case FailureKind::CriticalPlasticStrain:
+      return "critical_plastic_strain";
+    case FailureKind::None:
+      break;
+  }
+  return "none";
+}
+
+// [materials.<name>] with model = "johnson_cook" (docs/case_format.md): every key required
+// unless a preset supplies it (defaults without a preset, spec §3: reference_temperature
+// 293 K, initial_temperature = reference_temperature, heating_fraction 0.9,
+// reference_strain_rate 1/s, failure "none").
+JohnsonCookModel parse_johnson_cook(const Reader& m, const JohnsonCookPreset* preset,
+                                    const std::string& failure) {
+  const JohnsonCookModel* d = preset ? &preset->model : nullptr;
+  using OptD = std::optional<double>;
+  auto def = [&](double JohnsonCookModel::*field) { return d ? OptD(d->*field) : std::nullopt; };
+  JohnsonCookModel jc;
+  jc.a = num(m, "jc_a", positive("a positive initial yield stress A in Pa"),
+             def(&JohnsonCookModel::a));
+  jc.b = num(m, "jc_b", non_negative("a hardening coefficient B >= 0 in Pa"),
+             def(&JohnsonCookModel::b));
+  jc.n = num(m, "jc_n", positive("a positive hardening exponent n"), def(&JohnsonCookModel::n));
+  jc.c =
+      num(m, "jc_c", non_negative("a strain-rate coefficient C >= 0"), def(&JohnsonCookModel::c));
+  jc.m = num(m, "jc_m", positive("a positive thermal-softening exponent m"),
+             def(&JohnsonCookModel::m));
+  jc.reference_strain_rate =
+      num(m, "reference_strain_rate", positive("a positive reference strain rate in 1/s"),
+          d ? d->reference_strain_rate : 1.0);
+  jc.reference_temperature =
+      num(m, "reference_temperature", positive("a positive reference temperature T_r in K"),
+          d ? d->reference_temperature : 293.0);
+  jc.melting_temperature = num(m, "melting_temperature",
+                               {jc.reference_temperature, kInf, true, false,
+                                "a melting temperature in K above reference_temperature = " +
+                                    pretty(jc.reference_temperature)},
+                               def(&JohnsonCookModel::melting_temperature));
+  jc.initial_temperature =
+      num(m, "initial_temperature", positive("a positive initial temperature in K"),
+          jc.reference_temperature);
+  jc.specific_heat = num(m, "specific_heat", positive("a positive specific heat in J/(kg K)"),
+                         def(&JohnsonCookModel::specific_heat));
+  jc.heating_fraction =
+      num(m, "heating_fraction",
+          {0.0, 1.0, false, false, "a fraction of the plastic work turned into heat in [0, 1]"},
+          d ? d->heating_fraction : 0.9);
+  jc.eos_sound_speed =
+      num(m, "eos_sound_speed", positive("a positive Mie-Gruneisen bulk sound speed c in m/s"),
+          def(&JohnsonCookModel::eos_sound_speed));
+  jc.gruneisen_gamma = num(m, "gruneisen_gamma", non_negative("a Gruneisen coefficient >= 0"),
+                           def(&JohnsonCookModel::gruneisen_gamma));
+  jc.hugoniot_slope = num(m, "hugoniot_slope", non_negative("a Hugoniot slope s >= 0"),
+                          def(&JohnsonCookModel::hugoniot_slope));
+  if (failure == "johnson_cook") {
+    const bool same = d && d->failure.kind == FailureKind::JohnsonCook;
+    auto fdef = [&](double FailureModel::*field) {
+      return same ? OptD(d->failure.*field) : std::nullopt;
+    };
+    const Rule r = any("a Johnson-Cook failure constant");
+    jc.failure.kind = FailureKind::JohnsonCook;
+    jc.failure.d1 = num(m, "failure_d1", r, fdef(&FailureModel::d1));
+    jc.failure.d2 = num(m, "failure_d2", r, fdef(&FailureModel::d2));
+    jc.failure.d3 = num(m, "failure_d3", r, fdef(&FailureModel::d3));
+    jc.failure.d4 = num(m, "failure_d4", r, fdef(&FailureModel::d4));
+    jc.failure.d5 = num(m, "failure_d5", r, fdef(&FailureModel::d5));
+    // ε_f at zero triaxiality, reference rate and temperature must be a strain.
+    m.check(jc.failure.d1 + jc.failure.d2 > 0.0, m.has("failure_d1") ? "failure_d1" : "failure_d2",
+            "gives a failure strain D1 + D2 = " + pretty(jc.failure.d1 + jc.failure.d2) +
+                " <= 0 at zero triaxiality",
+            "D1 + D2 > 0", jc.failure.d1);
+  } else if (failure == "critical_plastic_strain") {
+    jc.failure.kind = FailureKind::CriticalPlasticStrain;
+    jc.failure.critical_plastic_strain =
+        num(m, "critical_plastic_strain", positive("a positive critical plastic strain"));
+  }
+  return jc;
+}
+
 std::vector<MaterialConfig> parse_materials(const Reader& root,
                                             std::vector<std::pair<std::string, int>>& lines) {
   std::vector<MaterialConfig> out;
@@ -241,10 +326,35 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
                                   "av_alpha", "av_beta", "hourglass"};
     if (model == "j2_linear_hardening")
       keys.insert(keys.end(), {"yield_stress", "hardening_modulus"});
-    m.allow(keys, "for material model '" + model + "'");
+    // Johnson–Cook: the preset (a shipped material) supplies every default; the failure
+    // choice decides which failure constants apply.
+    const JohnsonCookPreset* preset = nullptr;
+    std::string failure = "none";
+    if (model == "johnson_cook") {
+      std::vector<std::string> names;
+      for (const auto& pr : kJohnsonCookPresets) names.emplace_back(pr.name);
+      if (const auto pn = m.choice("preset", names))
+        for (const auto& pr : kJohnsonCookPresets)
+          if (pr.name == *pn) preset = &pr;
+      failure = m.choice("failure", kFailures)
+                    .value_or(preset ? failure_name(preset->model.failure.kind) : "none");
+      keys.insert(
+          keys.end(),
+          {"preset", "jc_a", "jc_b", "jc_n", "jc_c", "jc_m", "reference_strain_rate",
+           "reference_temperature", "melting_temperature", "initial_temperature", "specific_heat",
+           "heating_fraction", "eos_sound_speed", "gruneisen_gamma", "hugoniot_slope", "failure"});
+      if (failure == "johnson_cook")
+        keys.insert(keys.end(),
+                    {"failure_d1", "failure_d2", "failure_d3", "failure_d4", "failure_d5"});
+      if (failure == "critical_plastic_strain") keys.emplace_back("critical_plastic_strain");
+    }
+    m.allow(keys, "for material model '" + model + "'" +
+                      (model == "johnson_cook" ? " with failure '" + failure + "'" : ""));
     MaterialConfig mc;
     mc.name = name;
-    if (model == "j2_linear_hardening") {
+    if (model == "johnson_cook") {
+      mc.model = parse_johnson_cook(m, preset, failure);
+    } else if (model == "j2_linear_hardening") {
       J2LinearHardeningModel j2;
       j2.yield_stress = num(m, "yield_stress", positive("a positive yield stress in Pa"));
       j2.hardening_modulus =
@@ -253,10 +363,14 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
     } else {
       mc.model = SvkModel{};
     }
-    mc.density = num(m, "density", positive("a positive density in kg/m^3"));
-    mc.youngs_modulus = num(m, "youngs_modulus", positive("a positive Young's modulus in Pa"), 0.0);
+    using OptD = std::optional<double>;
+    mc.density = num(m, "density", positive("a positive density in kg/m^3"),
+                     preset ? OptD(preset->density) : std::nullopt);
+    mc.youngs_modulus = num(m, "youngs_modulus", positive("a positive Young's modulus in Pa"),
+                            preset ? preset->youngs_modulus : 0.0);
     mc.poisson_ratio =
-        num(m, "poisson_ratio", {-1.0, 0.5, true, true, "a Poisson ratio in (-1, 0.5)"}, 0.0);
+        num(m, "poisson_ratio", {-1.0, 0.5, true, true, "a Poisson ratio in (-1, 0.5)"},
+            preset ? preset->poisson_ratio : 0.0);
     mc.av_alpha = num(m, "av_alpha", non_negative("an artificial-viscosity alpha >= 0"), 1.0);
     mc.av_beta = num(m, "av_beta", non_negative("an artificial-viscosity beta >= 0"), 0.0);
     mc.hourglass = num(m, "hourglass", non_negative("an hourglass coefficient >= 0"), 0.1);

@@ -109,6 +109,34 @@ std::string resolved_case_toml(const CaseConfig& c) {
       o << "model = \"j2_linear_hardening\"\n";
       o << "yield_stress = " << d(j2->yield_stress) << "  # [Pa]\n";
       o << "hardening_modulus = " << d(j2->hardening_modulus) << "  # [Pa]\n";
+    } else if (const auto* jc = std::get_if<JohnsonCookModel>(&m.model)) {
+      o << "model = \"johnson_cook\"\n";
+      o << "jc_a = " << d(jc->a) << "  # [Pa]\n";
+      o << "jc_b = " << d(jc->b) << "  # [Pa]\n";
+      o << "jc_n = " << d(jc->n) << "\n";
+      o << "jc_c = " << d(jc->c) << "\n";
+      o << "jc_m = " << d(jc->m) << "\n";
+      o << "reference_strain_rate = " << d(jc->reference_strain_rate) << "  # [1/s]\n";
+      o << "reference_temperature = " << d(jc->reference_temperature) << "  # [K]\n";
+      o << "melting_temperature = " << d(jc->melting_temperature) << "  # [K]\n";
+      o << "initial_temperature = " << d(jc->initial_temperature) << "  # [K]\n";
+      o << "specific_heat = " << d(jc->specific_heat) << "  # [J/(kg K)]\n";
+      o << "heating_fraction = " << d(jc->heating_fraction) << "\n";
+      o << "eos_sound_speed = " << d(jc->eos_sound_speed) << "  # [m/s]\n";
+      o << "gruneisen_gamma = " << d(jc->gruneisen_gamma) << "\n";
+      o << "hugoniot_slope = " << d(jc->hugoniot_slope) << "\n";
+      const FailureModel& f = jc->failure;
+      if (f.kind == FailureKind::JohnsonCook) {
+        o << "failure = \"johnson_cook\"\n";
+        o << "failure_d1 = " << d(f.d1) << "\nfailure_d2 = " << d(f.d2)
+          << "\nfailure_d3 = " << d(f.d3) << "\nfailure_d4 = " << d(f.d4)
+          << "\nfailure_d5 = " << d(f.d5) << "\n";
+      } else if (f.kind == FailureKind::CriticalPlasticStrain) {
+        o << "failure = \"critical_plastic_strain\"\n";
+        o << "critical_plastic_strain = " << d(f.critical_plastic_strain) << "\n";
+      } else {
+        o << "failure = \"none\"\n";
+      }
     } else {
       o << "model = \"svk\"\n";
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -212,7 +213,11 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   sm.density = mat.density > 0.0 ? mat.density : body.rho0.empty() ? 0.0 : body.rho0[0];
   sm.youngs_modulus = mat.youngs_modulus;
   sm.poisson_ratio = mat.poisson_ratio;
-  sm.law = make_material_law(mat.model, mat.youngs_modulus, mat.poisson_ratio);
+  try {
+    sm.law = make_material_law(mat.model, mat.youngs_modulus, mat.poisson_ratio, sm.density);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("body '" + cfg.name + "': material '" + mat.name + "': " + e.what());
+  }
   sm.av_alpha = mat.av_alpha;
   sm.av_beta = mat.av_beta;
   sm.hourglass = mat.hourglass;
@@ -243,7 +248,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   body.F.assign(n, Mat2::identity());
   body.P.assign(n, Mat2{});
   body.e.assign(n, 0.0);
-  body.history.reset(history_fields(sm.law), n);
+  body.history.reset(history_fields(sm.law), n, initial_history(sm.law));
   // The initial state (F from x = X, i.e. I to round-off) is the first committed update;
   // afterwards the law is evaluated once per sub-step by advance_elastic.
   ForceScratch s;
