@@ -19,7 +19,8 @@
 //  - Isochoric plane-strain stretch F = diag(λ, 1/λ): J = 1, the external work Σ P : ΔF
 //    minus the stored energy is the plastic work W_p, and ρ0 c_v (T − T0) = χ W_p.
 //  - Frame indifference: F → Q(θ) F with θ growing to 90° along the path gives P → Q P and
-//    the same history (all of it lives in the reference frame).
+//    the same history (all of it lives in the reference frame); and along that stretch-and-
+//    shear path the committed history reproduces the returned stress at the same F.
 //  - Failure (Johnson & Cook 1985): ε_f = [D1 + D2 exp(D3 σ*)][1 + D4 ln ε̇*][1 + D5 T*];
 //    in uniaxial stress σ* = 1/3, so at the reference rate a particle fails at ε̄p = 0.209.
 #include <gtest/gtest.h>
@@ -127,7 +128,7 @@ TEST(JohnsonCookPoint, FlowStressOfAl2024MatchesTheReferenceSheet) {
 // rates and two temperatures, isothermal (χ = 0) so the closed-form curve applies.
 TEST(JohnsonCookPoint, UniaxialStressFollowsTheClosedFormCurveLoadingAndUnloading) {
   for (double rate : {1.0, 1e3, 1e4}) {
-    for (double T0 : {293.0, 534.0}) {  // T* = 0 and 0.5
+    for (double T0 : {293.0, 534.0, 250.0}) {  // T* = 0, 0.5 and below T_r (clipped to 0)
       JohnsonCookModel m = kAl.model;
       m.heating_fraction = 0.0;
       m.initial_temperature = T0;
@@ -284,7 +285,7 @@ TEST(JohnsonCookPoint, FrameIndifferentUnderALargeRotation) {
   const JohnsonCook l = law(m);
   History ha = l.initial_history(), hb = ha;
   Mat2 Fa_old = Mat2::identity(), Fb_old = Fa_old;
-  double max_p = 0.0, max_diff = 0.0, max_h = 0.0;
+  double max_p = 0.0, max_diff = 0.0, max_h = 0.0, max_commit = 0.0;
   const int n = 400;
   for (int k = 1; k <= n; ++k) {
     const double s = double(k) / n;
@@ -293,8 +294,14 @@ TEST(JohnsonCookPoint, FrameIndifferentUnderALargeRotation) {
     const Mat2 Fa{std::exp(e), g, 0.0, 1.0};
     const Mat2 Q = rotation(0.5 * M_PI * s);
     const Mat2 Fb = Q * Fa;
-    const Mat2 Pa = l.update(Fa_old, Fa, 1e-4, ha);
+    const KirchhoffStress ta = l.update_kirchhoff(Fa, 1.0, 1e-4, ha);
+    const Mat2 Pa = ta.in_plane * transpose(inverse(Fa));
     const Mat2 Pb = l.update(Fb_old, Fb, 1e-4, hb);
+    // The committed history reproduces the returned stress (every Cp⁻¹ component written).
+    const KirchhoffStress te = l.elastic_kirchhoff(Fa, 1.0, ha);
+    max_commit = std::max({max_commit, std::abs(te.in_plane.xx - ta.in_plane.xx),
+                           std::abs(te.in_plane.xy - ta.in_plane.xy),
+                           std::abs(te.in_plane.yy - ta.in_plane.yy), std::abs(te.zz - ta.zz)});
     Fa_old = Fa;
     Fb_old = Fb;
     const Mat2 d = Pb - Q * Pa;
@@ -306,6 +313,7 @@ TEST(JohnsonCookPoint, FrameIndifferentUnderALargeRotation) {
   EXPECT_GT(ha[JC::kPlasticStrain], 0.05);
   EXPECT_LT(max_diff, 1e-9 * max_p);
   EXPECT_LT(max_h, 1e-9);
+  EXPECT_LT(max_commit, 1e-9 * max_p);
   EXPECT_NEAR(l.cauchy_zz(Fb_old, hb), l.cauchy_zz(Fa_old, ha), 1e-9 * max_p);
 }
 
