@@ -14,6 +14,7 @@
 #include "app/checkpoint.h"
 #include "app/recorder.h"
 #include "app/setup_warnings.h"
+#include "app/snapshots.h"
 #include "app/stop_signal.h"
 #include "core/error.h"
 #include "io/progress_line.h"
@@ -98,6 +99,7 @@ int Simulation::run() {
   constexpr double kFlushSeconds = 2.0;
   double last_flush = 0.0;
   RunStatus status;
+  std::optional<SnapshotWriter> snapshots;  // [output] snapshots (app/snapshots.h)
   try {
     if (resume) {
       if (resume->vtk) remove_frames_from(opt_.out_dir, resume->vtk->frame);
@@ -105,6 +107,7 @@ int Simulation::run() {
     } else {
       rec.start(warnings_);
     }
+    snapshots.emplace(cfg_, opt_.out_dir, opt_.write_output, opt_.quiet, time());
     while (time() < end * (1.0 - 1e-12)) {
       // Checkpoints are taken between steps, before the outputs due at this time.
       if (checkpoints && time() >= schedule.next - 1e-15) {
@@ -123,6 +126,7 @@ int Simulation::run() {
         break;
       }
       rec.before_step();
+      snapshots->take_due(*stepper_);
       stepper_->step();
       rec.after_step();
       progress.update(time(), steps(), last_step_limit().dt);
@@ -133,6 +137,7 @@ int Simulation::run() {
     }
     // The end state, so that the run can be extended (slamsph resume --end-time).
     if (checkpoints && steps() != checkpoint_step) checkpoint();
+    snapshots->take_due(*stepper_);
     rec.finish();
   } catch (const DivergenceError& e) {
     status.code = 3;

@@ -128,6 +128,14 @@ struct OutputConfig {
   std::string vtk_compression = "none";   // "none" or "zlib"
   std::string plot;                       // "" or "cylinder_entry", "dam_break", "plate", "gate"
   std::vector<ProbeConfig> probes;
+  // Times [s] of field snapshots (snapshots/*.png, app/snapshots.h), increasing, in
+  // (0, end_time]; each is taken at the first fluid step at or after it.
+  std::vector<double> snapshots;
+  // The region drawn [m]; empty (min = max) = around the elastic bodies.
+  Box snapshot_view;
+  // Body whose skin mid-surface P_yy against the angle is written at each snapshot time
+  // ("" = none; a ring-shaped elastic body).
+  std::string skin_profile;
 };
 
 struct CaseConfig {

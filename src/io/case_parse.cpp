@@ -627,8 +627,8 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
   o.interval = c.numerics.end_time / 50.0;
   auto r = root.table("output", "an [output] table");
   if (!r) return o;
-  r->allow(
-      {"interval", "probe_interval", "vtk", "vtk_precision", "vtk_compression", "plot", "probe"});
+  r->allow({"interval", "probe_interval", "vtk", "vtk_precision", "vtk_compression", "plot",
+            "probe", "snapshots", "snapshot_view", "skin_profile"});
   o.interval = num(*r, "interval", positive("a positive output interval in s"), o.interval);
   o.probe_interval =
       num(*r, "probe_interval", non_negative("a probe interval >= 0 in s (0 = every step)"), 0.0);
@@ -642,6 +642,23 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
            "gravity " + vec_text(c.numerics.gravity));
   if (o.plot == "dam_break" && c.fluid.blocks.empty())
     r->bad("plot", "the dam-break plot needs the water column", "a [[fluid.block]]");
+  const std::string snap_expect = "an increasing list of times in s in (0, numerics.end_time]";
+  o.snapshots = r->num_list("snapshots", snap_expect).value_or(std::vector<double>{});
+  for (std::size_t i = 0; i < o.snapshots.size(); ++i) {
+    const double t = o.snapshots[i];
+    const bool order_ok = i == 0 || t > o.snapshots[i - 1];
+    if (!(t > 0.0 && t <= c.numerics.end_time * (1.0 + 1e-12)) || !order_ok)
+      r->bad("snapshots",
+             "element " + std::to_string(i) + " is " +
+                 (order_ok ? "outside (0, end_time]" : "not after the one before it"),
+             snap_expect + " (end_time " + pretty(c.numerics.end_time) + ")", pretty(t));
+  }
+  if (auto v = r->table("snapshot_view", "a table {min = [x, y], max = [x, y]} in m")) {
+    v->allow({"min", "max"});
+    if (o.snapshots.empty())
+      r->bad("snapshot_view", "a view without snapshots", "output.snapshots = [t1, ...] as well");
+    o.snapshot_view = read_box(*v);
+  }
   // A body of the case (the error suggests the nearest name).
   auto known_body = [&](const Reader& rr, std::string_view key,
                         const std::string& name) -> const BodyConfig& {
@@ -654,6 +671,17 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     rr.bad(key, "unknown body" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
            "the name of a [[body]]", "\"" + name + "\"");
   };
+  if (auto sp = r->string("skin_profile", "the name of a ring-shaped elastic [[body]]")) {
+    const BodyConfig& b = known_body(*r, "skin_profile", *sp);
+    if (b.kind != "elastic" || b.shape.type != "ring")
+      r->bad("skin_profile", "the skin profile needs an elastic body of shape type 'ring'",
+             "the name of a ring-shaped elastic [[body]]",
+             "\"" + *sp + "\" (" + b.kind + ", " + b.shape.type + ")");
+    if (o.snapshots.empty())
+      r->bad("skin_profile", "the skin profile is written at the snapshot times",
+             "output.snapshots = [t1, t2, ...] as well");
+    o.skin_profile = *sp;
+  }
   const auto probes = r->table_array("probe", "[[output.probe]] tables with name and kind");
   std::set<std::string> names;
   for (std::size_t i = 0; i < probes.size(); ++i) {

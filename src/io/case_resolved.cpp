@@ -225,6 +225,16 @@ std::string resolved_case_toml(const CaseConfig& c) {
   o << "vtk_precision = " << q(out.vtk_precision) << "\n";
   o << "vtk_compression = " << q(out.vtk_compression) << "\n";
   o << "plot = " << q(out.plot) << "\n";
+  if (!out.snapshots.empty()) {
+    o << "snapshots = [";
+    for (std::size_t i = 0; i < out.snapshots.size(); ++i)
+      o << (i ? ", " : "") << d(out.snapshots[i]);
+    o << "]  # [s]\n";
+  }
+  if (!out.skin_profile.empty()) o << "skin_profile = " << q(out.skin_profile) << "\n";
+  const Box& view = out.snapshot_view;
+  if (view.max.x > view.min.x)
+    o << "snapshot_view = { min = " << v2(view.min) << ", max = " << v2(view.max) << " }  # [m]\n";
   for (const auto& p : out.probes) {
     o << "\n[[output.probe]]\n";
     o << "name = " << q(p.name) << "\n";

@@ -308,6 +308,36 @@ TEST(IoCaseErrors, StructuralProbes) {
   expect_error(outside, line_of(outside, "to = "), "output.probe[0].to", "outside the domain");
 }
 
+// [output] snapshots, snapshot_view and skin_profile (app/snapshots.h).
+TEST(IoCaseErrors, SnapshotsAndSkinProfile) {
+  const std::string order = replace_line(kBase, "[output]", "[output]\nsnapshots = [0.5, 0.2]");
+  expect_error(order, line_of(order, "snapshots"), "output.snapshots",
+               "not after the one before it");
+  const std::string late = replace_line(kBase, "[output]", "[output]\nsnapshots = [2.0]");
+  expect_error(late, line_of(late, "snapshots"), "output.snapshots", "outside (0, end_time]");
+  const std::string type = replace_line(kBase, "[output]", "[output]\nsnapshots = [0.1, \"a\"]");
+  expect_error(type, line_of(type, "snapshots"), "output.snapshots[1]", "wrong type");
+  const std::string disc =
+      replace_line(kBase, "[output]", "[output]\nsnapshots = [0.5]\nskin_profile = \"cyl\"");
+  expect_error(disc, line_of(disc, "skin_profile"), "output.skin_profile",
+               "elastic body of shape type 'ring'");
+  // The disc as a ring (its radius line dropped; a ring takes inner and outer radii).
+  const std::string ringed = replace_line(
+      replace_line(kBase, "type = \"disc\"",
+                   "type = \"ring\"\ninner_radius = 0.09\nouter_radius = 0.1\nlayers = 2"),
+      "radius = 0.1", "");
+  const std::string nosnap = replace_line(ringed, "[output]", "[output]\nskin_profile = \"cyl\"");
+  expect_error(nosnap, line_of(nosnap, "skin_profile"), "output.skin_profile",
+               "output.snapshots = [t1, t2, ...] as well");
+  const std::string view =
+      replace_line(kBase, "[output]",
+                   "[output]\nsnapshots = [0.5]\nsnapshot_view = {min = [1, 1], max = [0, 2]}");
+  expect_error(view, line_of(view, "snapshot_view"), "output.snapshot_view.max", "must exceed min");
+  const std::string ok =
+      replace_line(ringed, "[output]", "[output]\nsnapshots = [0.25, 0.5]\nskin_profile = \"cyl\"");
+  EXPECT_EQ(error_of(ok), "(no error)");
+}
+
 TEST(IoCaseErrors, NoParticles) {
   const std::string t = R"(schema_version = 1
 name = "empty"

@@ -112,6 +112,10 @@ void expect_equal(const CaseConfig& a, const CaseConfig& b) {
   EXPECT_EQ(a.output.vtk_precision, b.output.vtk_precision);
   EXPECT_EQ(a.output.vtk_compression, b.output.vtk_compression);
   EXPECT_EQ(a.output.plot, b.output.plot);
+  EXPECT_EQ(a.output.snapshots, b.output.snapshots);
+  EXPECT_SAME(a.output.snapshot_view.min, b.output.snapshot_view.min);
+  EXPECT_SAME(a.output.snapshot_view.max, b.output.snapshot_view.max);
+  EXPECT_EQ(a.output.skin_profile, b.output.skin_profile);
   ASSERT_EQ(a.output.probes.size(), b.output.probes.size());
   for (std::size_t i = 0; i < a.output.probes.size(); ++i) {
     const ProbeConfig &p = a.output.probes[i], &q = b.output.probes[i];
@@ -193,6 +197,9 @@ type = "disc"
 centre = [2.5, 1.5]
 radius = 0.05
 [output]
+snapshots = [0.001, 0.002]
+snapshot_view = {min = [1.0, 1.0], max = [2.0, 2.0]}
+skin_profile = "skin"
 [[output.probe]]
 name = "keel"
 kind = "body_pressure"
