@@ -151,7 +151,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   double hc = s.kernel_f.h();
   for (const SolidBody& b : s.bodies) hc = std::max(hc, b.kernel.h());
   s.kernel_c = Kernel(num.kernel, hc);
-  s.layout = plan_contact_layout(s.bodies, std::move(ref_normals), s.kernel_c.support());
+  s.layout = plan_contact_layout(s.bodies, std::move(ref_normals), s.kernel_c.support(), num.dx);
   init_contact_particles(s.contact, s.layout);
   return out;
 }

@@ -5,14 +5,15 @@
 namespace slamsph {
 
 ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
-                                  std::vector<std::vector<Vec2>> ref_normals, double support) {
+                                  std::vector<std::vector<Vec2>> ref_normals, double support,
+                                  double fluid_dx) {
   ContactLayout l;
   l.ref_normals = std::move(ref_normals);
   l.offset.assign(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) l.offset[b + 1] = l.offset[b] + bodies[b].size();
   for (std::size_t b = 0; b < bodies.size(); ++b)
     for (const GhostSpec& g :
-         plan_ghost_layers(bodies[b].X, l.ref_normals[b], bodies[b].dx, support))
+         plan_ghost_layers(bodies[b].X, l.ref_normals[b], bodies[b].dx, support, 0.5 * fluid_dx))
       l.ghosts.push_back({static_cast<std::uint32_t>(b), g});
   return l;
 }
@@ -68,7 +69,7 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
     contact.x[c] = contact.x[parent] - (gh.spec.depth * body.dx) * n;
     contact.v[c] = contact.v[parent];
     contact.a[c] = contact.a[parent];
-    contact.volume[c] = contact.volume[parent];
+    contact.volume[c] = gh.spec.weight * contact.volume[parent];
     contact.normal[c] = n;
   }
 }

@@ -31,15 +31,19 @@ struct ContactLayout {
 
 // Offsets of the bodies and the ghost layers they need for a kernel of support `support`;
 // ref_normals[b] are body b's reference surface normals (coupling/surface_normals.h).
+// fluid_dx: the water's spacing; ghost cells behind a body finer than the water are half of
+// it deep (coupling/ghost_layers.h; 0 = one ghost per missing body layer).
 ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
-                                  std::vector<std::vector<Vec2>> ref_normals, double support);
+                                  std::vector<std::vector<Vec2>> ref_normals, double support,
+                                  double fluid_dx = 0.0);
 
 // Sizes `contact` to the layout and fills its fixed fields (body, local, ghost).
 void init_contact_particles(ContactParticles& contact, const ContactLayout& layout);
 
 // Copies the bodies' current position, velocity, acceleration and volume into the contact
 // set, with the current outward normal: n ∝ F^-T N for elastic bodies (Nanson), N rotated
-// by the body's angle for moving rigid bodies. Ghosts follow their parent along its normal.
+// by the body's angle for moving rigid bodies. Ghosts follow their parent along its normal, with
+// their weight times its volume.
 void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
                        const std::vector<SolidBody>& bodies);
 

@@ -1,5 +1,6 @@
 #include "coupling/ghost_layers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/cell_grid.h"
@@ -7,11 +8,12 @@
 namespace slamsph {
 
 std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
-                                         const std::vector<Vec2>& normals, double d,
-                                         double support) {
+                                         const std::vector<Vec2>& normals, double d, double support,
+                                         double ghost_spacing) {
   std::vector<GhostSpec> out;
   if (X.empty()) return out;
   const int K = static_cast<int>(std::ceil(support / d - 1e-9));
+  const int m = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
   CellGrid grid;
   grid.build(X, d);
   auto occupied = [&](Vec2 p) {
@@ -27,7 +29,12 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
     if (norm2(n) == 0.0) continue;
     int present = 0;
     while (present < K && occupied(X[i] - (present + 1) * d * n)) ++present;
-    for (int k = present + 1; k <= K; ++k) out.push_back({static_cast<std::uint32_t>(i), k});
+    // Cells of m layers from the back face (present + 1/2) d until K d is covered; with
+    // m = 1 the depths are present + 1 ... K exactly.
+    const int cells = (K - present + m - 1) / m;
+    for (int j = 0; j < cells; ++j)
+      out.push_back(
+          {static_cast<std::uint32_t>(i), present + 0.5 + (j + 0.5) * m, static_cast<double>(m)});
   }
   return out;
 }

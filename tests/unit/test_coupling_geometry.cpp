@@ -39,7 +39,7 @@ TEST(CouplingGhostLayers, TwoLayerPlateGetsTheMissingLayersOnEachSide) {
   // Every particle of a two-layer plate is on a surface; behind each lies one body layer,
   // so depths 2 and 3 (= ceil(2.6)) are missing: two ghosts per particle away from the
   // plate's ends (whose normals are tilted).
-  std::multiset<int> depths_of_mid_top;
+  std::multiset<double> depths_of_mid_top;
   std::size_t mid = 0;
   for (const GhostSpec& s : g) {
     const std::size_t p = s.parent;
@@ -58,7 +58,7 @@ TEST(CouplingGhostLayers, TwoLayerPlateGetsTheMissingLayersOnEachSide) {
     if (top && col == nx / 2) depths_of_mid_top.insert(s.depth);
   }
   EXPECT_EQ(mid, 2u * 2u * (nx - 8));
-  EXPECT_EQ(depths_of_mid_top, (std::multiset<int>{2, 3}));
+  EXPECT_EQ(depths_of_mid_top, (std::multiset<double>{2.0, 3.0}));
 }
 
 TEST(CouplingGhostLayers, ThickPlateNeedsNoGhosts) {
@@ -92,7 +92,8 @@ TEST(CouplingGhostLayers, TwoLayerRingGhostsLieOnConcentricCircles) {
     // the ring at R + depth d.
     const double r_expected = outer ? R + kD - s.depth * kD : R + s.depth * kD;
     EXPECT_NEAR(norm(ghost), r_expected, 1e-9);
-    EXPECT_TRUE(s.depth == 2 || s.depth == 3);
+    EXPECT_TRUE(s.depth == 2.0 || s.depth == 3.0);
+    EXPECT_EQ(s.weight, 1.0);
   }
 }
 
