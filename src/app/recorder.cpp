@@ -45,6 +45,7 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
         return std::make_unique<CsvWriter>(path, headers, CsvWriter::Resume{c.bytes, c.rows});
     throw InputError("checkpoint has no state for " + path);
   };
+  failure_log_.reset(bodies);  // a resumed run does not report its failed particles again
   if (opt_.write_output) {
     const std::string& dir = opt_.out_dir;
     if (!resume) OutputFolder::check_free(dir, opt_.overwrite);
@@ -54,6 +55,7 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     if (!bodies.empty()) names.insert(names.end(), {"forces.csv", "bodies.csv"});
     if (cfg_.output.vtk) names.insert(names.end(), {"vtk/", "fields.pvd"});
     if (opt_.checkpoint_interval > 0.0) names.push_back("checkpoints/");
+    if (failure_log_.active()) names.push_back("failure.csv");
     folder_->record(names);
     RunStatus running;
     running.running = true;
@@ -91,6 +93,7 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     for (const std::string& s : probes_.headers()) hp.push_back(s);
     hp.push_back("leaked_particles [-]");
     probes_csv_ = csv("probes.csv", hp);
+    if (failure_log_.active()) failure_csv_ = csv("failure.csv", FailureLog::headers());
   }
   prev_loads_ = st_.body_loads();
   if (!resume) record_loads(0.0);  // a resumed run has this row already
@@ -98,7 +101,8 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
 
 std::vector<CsvResume> Recorder::csv_state() const {
   std::vector<CsvResume> out;
-  for (const CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get()}) {
+  for (const CsvWriter* w :
+       {forces_.get(), probes_csv_.get(), bodies_csv_.get(), failure_csv_.get()}) {
     if (!w) continue;
     const std::string name = std::filesystem::path(w->path()).filename().string();
     out.push_back({name, std::filesystem::file_size(w->path()), w->rows_written()});
@@ -212,6 +216,8 @@ void Recorder::before_step() {
 
 void Recorder::after_step() {
   record_loads(st_.last_step_limit().dt);
+  for (const std::vector<double>& row : failure_log_.scan(st_.system().bodies, st_.time()))
+    if (failure_csv_) failure_csv_->row(row);
 }
 
 void Recorder::finish() {
@@ -237,7 +243,7 @@ void Recorder::flush() {
       if (!first) first = e;
     }
   };
-  for (CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get()})
+  for (CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get(), failure_csv_.get()})
     if (w) attempt([&] { w->flush(); });
   if (folder_) attempt([&] { folder_->record(); });
   if (first) throw *first;
@@ -290,6 +296,7 @@ void Recorder::write_summary(const RunStatus& status) const {
     loads.push_back(o);
   }
   summary.set("bodies", loads);
+  if (failure_log_.active()) summary.set("failures", failure_log_.summary(sys.bodies));
   if (state == "completed" && opt_.write_output) {
     JsonObject validation;
     if (validation_report(cfg_, opt_.out_dir, validation)) summary.set("validation", validation);

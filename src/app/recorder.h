@@ -5,7 +5,7 @@
 //
 // Per step the driver calls before_step() (probe rows and VTK frames due at the current
 // time), then FsiStepper::step(), then after_step() (forces.csv row, peak, impulse by the
-// trapezoid rule over the step).
+// trapezoid rule over the step, failure.csv rows of the particles that failed in the step).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/failure_log.h"
 #include "app/fsi_stepper.h"
 #include "app/probes.h"
 #include "app/run_options.h"
@@ -88,6 +89,7 @@ class Recorder {
     f("peak_time", s.peak_time_);
     f("impulse", s.impulse_);
     f("wall_seconds_before", s.wall_before_);
+    f("first_failure", s.failure_log_.first);
   }
   // Wall time of the segments before this one (resumed runs) plus `segment`.
   double wall_seconds(double segment) const { return wall_before_ + segment; }
@@ -107,6 +109,8 @@ class Recorder {
   std::vector<std::string> warnings_;  // set-up warnings, for summary.json
   std::unique_ptr<VtkSeries> vtk_;
   std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_;
+  FailureLog failure_log_;                  // failed particles (app/failure_log.h)
+  std::unique_ptr<CsvWriter> failure_csv_;  // failure.csv, when a law can fail
 
   double vtk_dt_ = 0.0, probe_dt_ = 0.0;
   double next_vtk_ = 0.0, next_probe_ = 0.0;

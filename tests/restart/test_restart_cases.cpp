@@ -1,5 +1,6 @@
-// Restart tier (issue 8, item 6): for the elastic cylinder entry, the elastic gate and the
-// dam break at reduced resolution, a run to T and a run to T/2 continued by
+// Restart tier (issue 8, item 6): for the elastic cylinder entry, the elastic gate, the
+// dam break at reduced resolution and the Johnson–Cook bar (failure.csv, damage history),
+// a run to T and a run to T/2 continued by
 // `slamsph resume --end-time T` leave byte-identical output folders (summary.json compared
 // without its wall-time fields and thread count; the checkpoints themselves aside) —
 // started at 1 thread and resumed at 2, and started at 2 and resumed at 1. A run killed
@@ -42,6 +43,8 @@ const RestartCase kCases[] = {
     {"elastic_cylinder_entry", "0.01", 0.012, "0.0015"},
     {"elastic_gate", "0.0015", 0.016, "0.002"},
     {"dam_break", "0.02", 0.08, "0.01"},
+    // Johnson–Cook history (temperature, damage, failed) and failure.csv across a restart.
+    {"johnson_cook_bar", "0.001", 6e-5, "1e-5"},
 };
 
 std::string read_file(const fs::path& p) {
