@@ -65,15 +65,24 @@ int run_converge(ConvergeRequest& r) {
   std::vector<std::string> fixed;
   std::string res_key;
   std::vector<std::string> res_values;
+  // Further multi-valued keys change with the resolution key, value by value (a ring's
+  // layers and its body spacing).
+  std::vector<std::pair<std::string, std::vector<std::string>>> linked;
   for (const std::string& s : r.sets) {
     auto [k, v] = split_study_set(s);
     if (v.size() == 1) {
       fixed.push_back(k + "=" + v[0]);
       continue;
     }
-    if (!res_key.empty())
-      throw InputError("command line: converge varies one resolution key; --set " + res_key +
-                       " and --set " + k + " both have several values");
+    if (!res_key.empty()) {
+      if (v.size() != res_values.size())
+        throw InputError("command line: converge: --set " + k + " has " + std::to_string(v.size()) +
+                         " values but --set " + res_key + " has " +
+                         std::to_string(res_values.size()) +
+                         "; keys that change with the resolution need one value per run");
+      linked.emplace_back(k, v);
+      continue;
+    }
     res_key = k;
     res_values = v;
   }
@@ -102,6 +111,7 @@ int run_converge(ConvergeRequest& r) {
     } else {
       const std::string set = res_key + "=" + res_values[i];
       v.overrides.push_back(set);
+      for (const auto& [lk, lv] : linked) v.overrides.push_back(lk + "=" + lv[i]);
       v.values = {res_values[i]};
       char* end = nullptr;
       const double val = std::strtod(res_values[i].c_str(), &end);
@@ -212,7 +222,8 @@ CLI::App* add_converge_command(CLI::App& app, int& exit_code) {
   sub->add_option("--set", req->sets,
                   "A resolution key and its values instead of --dx-factors, e.g. "
                   "body[1].shape.layers=2,3,6 (grid size 1/value; a key ending in dx: the "
-                  "value); single-valued --set KEY=VALUE apply to every run")
+                  "value); further multi-valued --sets change with it value by value (e.g. "
+                  "body[1].dx); single-valued --set KEY=VALUE apply to every run")
       ->type_name("KEY=V1,V2,...")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
       ->allow_extra_args(false);

@@ -1,6 +1,8 @@
 // `slamsph converge CASE --dx-factors 1,0.5,0.25` (the fluid spacing times each factor,
 // bodies keeping their spacing relative to the water) or `--set KEY=V1,V2,V3` with KEY a
-// resolution key (ending in "layers": grid size ∝ 1/value; ending in "dx": ∝ value):
+// resolution key (ending in "layers": grid size ∝ 1/value; ending in "dx": ∝ value; the
+// first multi-valued --set; further multi-valued --sets with as many values change with
+// it, e.g. a ring's layers and the body spacing):
 // runs each resolution, then writes into the study folder
 //   converge.csv, converge.md   each metric per resolution (app/run_metrics.h) and, for
 //                               every three consecutive resolutions, the observed order,

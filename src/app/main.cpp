@@ -16,6 +16,7 @@
 #include "app/checkpoint.h"
 #include "app/converge_command.h"
 #include "app/output_folder.h"
+#include "app/overlay_command.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
 #include "app/simulation.h"
@@ -38,6 +39,8 @@ struct Request {
   std::optional<double> dx;
   std::vector<std::string> sets;
   std::string help_topic;
+  std::vector<std::string> plot_dirs;  // plot: one run, or several compared in out_dir
+  std::string plot_body;
   bool no_output = false;
   bool overwrite = false;
 };
@@ -212,9 +215,16 @@ int dispatch(int argc, char** argv) {
   resume->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
 
   CLI::App* plot = app.add_subcommand("plot", "Redraw the PNG plots of a run from its folder");
-  plot->add_option("dir", req.out_dir, "A results folder (holding case.resolved.toml)")
+  plot->add_option("dir", req.plot_dirs,
+                   "A results folder (holding case.resolved.toml); several folders: their "
+                   "forces (and skin P_yy) in one plot with a table, in --out")
       ->required()
-      ->type_name("DIR");
+      ->type_name("DIR...");
+  plot->add_option("-o,--out", req.out_dir, "Comparison folder (several DIRs only)")
+      ->type_name("OUT");
+  plot->add_option("--body", req.plot_body,
+                   "Body compared (several DIRs; default: the first not rigid_fixed)")
+      ->type_name("NAME");
 
   int study_code = 0;  // sweep and converge run inside app.parse and leave their exit code
   CLI::App* studies[] = {add_sweep_command(app, study_code), add_converge_command(app, study_code)};
@@ -276,7 +286,9 @@ int dispatch(int argc, char** argv) {
     return 2;
   }
   if (studies[0]->parsed() || studies[1]->parsed()) return study_code;
-  if (plot->parsed()) return plot_command(req.out_dir);
+  if (plot->parsed() && req.plot_dirs.size() > 1)
+    return overlay_command(req.plot_dirs, req.out_dir, req.plot_body, false);
+  if (plot->parsed()) return plot_command(req.plot_dirs.front());
   if (resume->parsed()) return resume_run(req);
   return run_or_check(run->parsed() ? "run" : "check", req);
 }

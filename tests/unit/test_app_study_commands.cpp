@@ -171,6 +171,20 @@ TEST_F(StudyCommands, SweepTwoByTwo) {
   EXPECT_EQ(run(again), 2);
   EXPECT_NE(err_.find("--overwrite"), std::string::npos) << err_;
   EXPECT_NE(rerun.find("--threads 1 --overwrite"), std::string::npos) << rerun;
+  // Two of the runs compared with `slamsph plot DIR1 DIR2 --out OUT`.
+  const std::string l1 = rows[1].substr(0, rows[1].find(','));
+  const std::string l4 = rows[4].substr(0, rows[4].find(','));
+  ASSERT_EQ(run("plot sw/" + l1 + " sw/" + l4 + " --out cmp"), 0) << err_;
+  const std::vector<std::string> cmp = lines(slurp(root_ / "cmp" / "overlay.csv"));
+  ASSERT_EQ(cmp.size(), 3u);
+  EXPECT_EQ(cmp[1].substr(0, cmp[1].find(',')), "../sw/" + l1);
+  // The same metrics (peak force onwards) as the sweep's row of that run.
+  EXPECT_NE(cmp[2].find(rows[4].substr(rows[4].find(",\"[0,-3]\",2.4e7,") + 17, 20)),
+            std::string::npos)
+      << cmp[2] << "\n"
+      << rows[4];
+  EXPECT_NE(slurp(root_ / "cmp" / "overlay_force.gp").find("'../sw/" + l4 + "/forces.csv'"),
+            std::string::npos);
 }
 
 TEST_F(StudyCommands, EveryVariantValidatedBeforeAnyRun) {
@@ -202,6 +216,10 @@ TEST_F(StudyCommands, ConvergeNeedsAResolution) {
   EXPECT_EQ(run("converge ring.toml --dx-factors 1,0.5 -q"), 2);
   EXPECT_NE(err_.find("at least three"), std::string::npos) << err_;
   EXPECT_EQ(run("converge ring.toml -q"), 2);
+  EXPECT_EQ(
+      run("converge ring.toml --set body[1].shape.layers=2,3,4 --set body[1].dx=0.005,0.004 -q"),
+      2);
+  EXPECT_NE(err_.find("one value per run"), std::string::npos) << err_;
 }
 
 }  // namespace
