@@ -18,7 +18,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target test_app_static_structures -j"$(nproc)" >/dev/null
 runs="$out/runs.csv"
 [ -f "$runs" ] || echo "case,layers,particles,q1,sph1,ccx1,q2,sph2,ccx2,seconds" >"$runs"
-for c in ${STATIC_CASES:-t_joint:4 t_joint:6 t_joint:8 t_joint:12 ring:2 ring:3 ring:4 ring:6}; do
+for c in ${STATIC_CASES:-t_joint:4 t_joint:6 t_joint:8 t_joint:12 t_joint_lateral:4 t_joint_lateral:6 t_joint_lateral:8 t_joint_lateral:12 ring:2 ring:3 ring:4 ring:6}; do
   IFS=: read -r name L <<<"$c"
   if grep -q "^$name,$L," "$runs"; then continue; fi
   SLAMSPH_STATIC_CASE=$name SLAMSPH_STATIC_LAYERS=$L ./build/tests/test_app_static_structures \
@@ -31,8 +31,11 @@ print("| case | layers | particles | quantity | SPH [m] | CalculiX [m] | error |
 print("|" + " --- |" * 12)
 for r in csv.DictReader(open(sys.argv[1])):
     e1 = 100 * (float(r["sph1"]) / float(r["ccx1"]) - 1)
-    e2 = 100 * (float(r["sph2"]) / float(r["ccx2"]) - 1)
+    if float(r["ccx2"]) != 0.0:
+        e2 = 100 * (float(r["sph2"]) / float(r["ccx2"]) - 1)
+        q2 = f"{r['q2']} | {float(r['sph2']):.4e} | {float(r['ccx2']):.4e} | {e2:+.2f} %"
+    else:
+        q2 = "– | – | – | –"
     print(f"| {r['case']} | {r['layers']} | {r['particles']} | {r['q1']} | {float(r['sph1']):.4e} | "
-          f"{float(r['ccx1']):.4e} | {e1:+.2f} % | {r['q2']} | {float(r['sph2']):.4e} | "
-          f"{float(r['ccx2']):.4e} | {e2:+.2f} % | {r['seconds']} |")
+          f"{float(r['ccx1']):.4e} | {e1:+.2f} % | {q2} | {r['seconds']} |")
 PY

@@ -12,6 +12,8 @@ conditions that remove the rigid modes without reactions.
   ring:    R/h = 20, h = 3 mm aluminium (E 67.5 GPa, nu 0.34), diametral compression by a
            pressure on the outer face over +-10 deg around the top and the bottom, total
            vertical force P = 2 p R_out sin(10 deg) = 1000 N/m each side.
+  t_joint_lateral: the same T-joint with its web bent sideways by Q = 0.1 N/m on its top
+           face (balanced on the flange: see t_joint_lateral()).
 
 usage: scripts/calculix/static_cases.py OUT.csv [WORKDIR]
 Writes case,quantity,value (m): see QUANTITIES below; also the coarse-mesh values (half the
@@ -26,7 +28,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ccx_mesh  # noqa: E402
 
 # T-joint (SI)
-TJ = dict(L=0.2, tf=0.01, tw=0.01, hw=0.06, patch=0.01, P=0.1, E=2.0e6, nu=0.3, rho=1000.0)
+TJ = dict(L=0.2, tf=0.01, tw=0.01, hw=0.06, patch=0.01, P=0.1, Q=0.1, E=2.0e6, nu=0.3,
+          rho=1000.0)
 # Ring (SI)
 RG = dict(h=0.003, r_over_h=20.0, alpha_deg=10.0, P=1000.0, E=67.5e9, nu=0.34, rho=2700.0)
 
@@ -70,6 +73,98 @@ def t_joint(e, workdir, job):
     return {"web_top_minus_ends": top - ends, "flange_mid_minus_ends": mid - ends,
             "web_top_minus_root": top - root}
 
+
+def t_joint_lateral(e, workdir, job):
+    """The T-joint with the web bent sideways: a shear traction Q/t_w (+x) on the web's top
+    face, balanced by -Q/L on the flange's bottom face and by the couple Q (h_w + t_f) carried
+    by vertical pressures on the end patches (up at +x, down at -x). Measured: the area mean
+    of u_x over the web above y = t_f (clear of the joint) minus that over the flange; the
+    web bends as a cantilever rooted in the joint, so the joint's compliance is in it."""
+    m = ccx_mesh.Mesh()
+    L, tf, tw, hw, pw = TJ["L"], TJ["tf"], TJ["tw"], TJ["hw"], TJ["patch"]
+    Q = TJ["Q"]
+    xs = [-L / 2, -L / 2 + pw, -tw / 2, tw / 2, L / 2 - pw, L / 2]
+    nv = round(tf / e)
+    ends = {}
+    for a in range(len(xs) - 1):
+        x0, x1 = xs[a], xs[a + 1]
+        nu = round((x1 - x0) / e)
+        ccx_mesh.add_block(m, lambda u, v: (x0 + (x1 - x0) * u, -tf + tf * v), nu, nv)
+        if a in (0, len(xs) - 2):
+            first = len(m.elements) - nu * nv
+            ends[a] = [first + k * nv + 1 for k in range(nu)]
+    nflange = len(m.elements)
+    nuw, nvw = round(tw / e), round(hw / e)
+    ccx_mesh.add_block(m, lambda u, v: (-tw / 2 + tw * u, hw * v), nuw, nvw)
+    # Consistent nodal forces of a uniform edge traction on quadratic edges: 1/6, 4/6, 1/6.
+    cload = {}
+
+    def edge_traction(y, x0, x1, t):
+        nodes = sorted((x, n) for n, (x, yy) in m.nodes.items()
+                       if abs(yy - y) < 1e-12 and x0 - 1e-12 <= x <= x1 + 1e-12)
+        for k in range(0, len(nodes) - 2, 2):
+            ell = nodes[k + 2][0] - nodes[k][0]
+            for j, w in ((k, 1 / 6), (k + 1, 4 / 6), (k + 2, 1 / 6)):
+                cload[nodes[j][1]] = cload.get(nodes[j][1], 0.0) + w * t * ell
+    edge_traction(hw, -tw / 2, tw / 2, Q / tw)
+    edge_traction(-tf, -L / 2, L / 2, -Q / L)
+    F = Q * (hw + tf) / (L - pw)  # the couple's vertical forces, at the patch centres
+    # ccx rigid modes: u_x fixed at the web top centre, u_y at the two patch-centre bottom nodes
+    # would be reactions; instead fix a statically determinate set and check the reactions
+    # vanish: u_x and u_y at the web-root centre, u_y at the right patch centre.
+    root = [n for n, (x, y) in m.nodes.items() if abs(x) < 1e-12 and abs(y) < 1e-12]
+    right = [n for n, (x, y) in m.nodes.items()
+             if abs(x - (L / 2 - pw / 2)) < 1e-12 and abs(y + tf) < 1e-12]
+    m.nsets["ROOT"] = root
+    m.nsets["RIGHT"] = right
+    m.nsets["NALL"] = list(m.nodes)
+    step = ["*STEP", "*STATIC", "*BOUNDARY", "ROOT, 1, 2, 0.", "RIGHT, 2, 2, 0.", "*CLOAD"]
+    step += [f"{n}, 1, {f:.12g}" for n, f in sorted(cload.items())]
+    step += ["*DLOAD"]
+    step += [f"{el}, P1, {F / pw:.12g}" for el in ends[len(xs) - 2]]
+    step += [f"{el}, P1, {-F / pw:.12g}" for el in ends[0]]
+    step += ["*NODE PRINT, NSET=NALL", "U", "*NODE PRINT, NSET=ROOT, TOTALS=ONLY", "RF",
+             "*END STEP"]
+    ccx_mesh.write_inp(os.path.join(workdir, job + ".inp"), m,
+                       {"E": TJ["E"], "nu": TJ["nu"], "rho": TJ["rho"]}, step)
+    dat = ccx_mesh.run_ccx(workdir, job)
+    u = ccx_mesh.node_displacements(dat.split(" forces (fx,fy,fz)")[0])
+
+    def weights(elements):
+        # Area weights of the nodes: the integral of N_i over an 8-node serendipity rectangle
+        # is -A/12 at corners and A/3 at mid-sides (the elements here are rectangles).
+        out = []
+        for eid, ns in elements:
+            xs_ = [m.nodes[n][0] for n in ns[:4]]
+            ys_ = [m.nodes[n][1] for n in ns[:4]]
+            A = (max(xs_) - min(xs_)) * (max(ys_) - min(ys_))
+            out += [(n, A * w) for n, w in zip(ns, [-1 / 12] * 4 + [1 / 3] * 4)]
+        return out
+
+    def mean(ws, f):
+        return sum(w * f(n) for n, w in ws) / sum(w for n, w in ws)
+    flange = weights(m.elements[:nflange])
+    web = weights([(eid, ns) for eid, ns in m.elements[nflange:]
+                   if sum(m.nodes[n][1] for n in ns[:4]) / 4 > tf])
+    return {"web_minus_flange_ux": web_relative_to_flange(
+        lambda f: mean(web, f), lambda f: mean(flange, f),
+        lambda n: m.nodes[n], lambda n: u[n])}
+
+
+def web_relative_to_flange(web_mean, flange_mean, X, u):
+    """Mean u_x of the web relative to the flange's least-squares rigid motion (translation
+    and rotation about its centroid), so the measure does not depend on how the rigid modes
+    are fixed (ccx: a determinate support; SPH: a free body). The same definition is in
+    tests/verification/test_app_static_structures.cpp."""
+    xc = flange_mean(lambda n: X(n)[0])
+    yc = flange_mean(lambda n: X(n)[1])
+    ux = flange_mean(lambda n: u(n)[0])
+    uy = flange_mean(lambda n: u(n)[1])
+    num = flange_mean(lambda n: (X(n)[0] - xc) * (u(n)[1] - uy) - (X(n)[1] - yc) * (u(n)[0] - ux))
+    den = flange_mean(lambda n: (X(n)[0] - xc) ** 2 + (X(n)[1] - yc) ** 2)
+    theta = num / den
+    # rigid field: u_r(X) = (ux, uy) + theta (-(Y - yc), X - xc)
+    return web_mean(lambda n: u(n)[0] + theta * (X(n)[1] - yc)) - ux
 
 def ring(n_radial, n_theta, workdir, job):
     h, R = RG["h"], RG["r_over_h"] * RG["h"]
@@ -129,6 +224,10 @@ def main():
     coarse = t_joint(0.00125, workdir, "t_joint_coarse")
     for k in fine:
         rows.append(("t_joint", k, fine[k], coarse[k]))
+    fine = t_joint_lateral(0.000625, workdir, "t_joint_lateral_fine")
+    coarse = t_joint_lateral(0.00125, workdir, "t_joint_lateral_coarse")
+    for k in fine:
+        rows.append(("t_joint_lateral", k, fine[k], coarse[k]))
     n_theta = 720  # 0.5 deg elements: the 10 deg patch is 20 elements
     fine = ring(4, n_theta, workdir, "ring_fine")
     coarse = ring(2, n_theta // 2, workdir, "ring_coarse")

@@ -128,6 +128,64 @@ TJointResult run_t_joint(int layers) {
   return r;
 }
 
+// The web bent sideways (static_cases.py: t_joint_lateral): Q on the web's top row (+x),
+// −Q spread over the flange's bottom row, and the couple carried by vertical forces on the
+// end patches, sized from the particles' own positions so that the net moment is exactly
+// zero (a free body would otherwise spin). Measure: the mean u_x of the web above y = t_f
+// relative to the flange's least-squares rigid motion (the ccx measure, free of the rigid
+// modes' gauge).
+double run_t_joint_lateral(int layers, std::size_t* particles) {
+  const double L = 0.2, tf = 0.01, tw = 0.01, hw = 0.06, pw = 0.01, Q = 0.1;
+  const double E = 2.0e6, nu = 0.3, rho = 1000.0, dx = tf / layers;
+  const std::vector<Vec2> T = {{-L / 2, -tf}, {L / 2, -tf},  {L / 2, 0.0},   {tw / 2, 0.0},
+                               {tw / 2, hw},  {-tw / 2, hw}, {-tw / 2, 0.0}, {-L / 2, 0.0}};
+  SolidBody b = make_elastic(polygon(T, dx), dx, rho, E, nu);
+  *particles = b.size();
+  double moment = 0.0, xr = 0.0, xl = 0.0;
+  std::vector<std::size_t> right, left;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2 X = b.X[i];
+    if (X.y > hw - dx) b.f_fluid[i].x += Q / tw * dx;
+    if (X.y < -tf + dx) b.f_fluid[i].x -= Q / L * dx;
+    moment -= X.y * b.f_fluid[i].x;
+    if (X.y < -tf + dx && X.x > L / 2 - pw) {
+      right.push_back(i);
+      xr += X.x;
+    }
+    if (X.y < -tf + dx && X.x < -L / 2 + pw) {
+      left.push_back(i);
+      xl += X.x;
+    }
+  }
+  const double f = -moment / (xr - xl);
+  for (std::size_t i : right) b.f_fluid[i].y += f;
+  for (std::size_t i : left) b.f_fluid[i].y -= f;
+  relax(b, 70.0, 4.0);
+  // Volume-weighted means over the flange (y < 0) and the web above y = t_f.
+  auto mean = [&](bool web, auto fn) {
+    double s = 0.0, v = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i)
+      if (web ? b.X[i].y > tf : b.X[i].y < 0.0) {
+        s += b.V0[i] * fn(i);
+        v += b.V0[i];
+      }
+    return s / v;
+  };
+  auto u = [&](std::size_t i) { return b.x[i] - b.X[i]; };
+  const double xc = mean(false, [&](std::size_t i) { return b.X[i].x; });
+  const double yc = mean(false, [&](std::size_t i) { return b.X[i].y; });
+  const double ux = mean(false, [&](std::size_t i) { return u(i).x; });
+  const double uy = mean(false, [&](std::size_t i) { return u(i).y; });
+  const double num = mean(false, [&](std::size_t i) {
+    return (b.X[i].x - xc) * (u(i).y - uy) - (b.X[i].y - yc) * (u(i).x - ux);
+  });
+  const double den = mean(false, [&](std::size_t i) {
+    return (b.X[i].x - xc) * (b.X[i].x - xc) + (b.X[i].y - yc) * (b.X[i].y - yc);
+  });
+  const double theta = num / den;
+  return mean(true, [&](std::size_t i) { return u(i).x + theta * (b.X[i].y - yc); }) - ux;
+}
+
 // --- Ring (scripts/calculix/static_cases.py: RG) --------------------------------------
 struct RingResult {
   double horizontal = 0.0, vertical = 0.0;  // mid-surface diameter changes [m]
@@ -205,6 +263,20 @@ TEST(StaticStructures, TJointThreePointBendingAgainstCalculix) {
   EXPECT_NEAR(r.flange_mid_minus_ends / c, 1.0, 0.05);
 }
 
+// The web bent sideways: the joint carries the web's bending moment into the flange.
+// Measured (docs/validation.md §5): +17.1 / +8.1 / +5.0 % at 4 / 6 / 8 layers across the
+// 10 mm web (first order: bending across few layers is too soft). CI at 6 layers holds the
+// measured value within 10 %; 5 % needs 8 layers (scripts/validate_static.sh), too slow here.
+TEST(StaticStructures, TJointWebBentSidewaysAgainstCalculix) {
+  const auto ref = ccx_reference("t_joint_lateral");
+  ASSERT_EQ(ref.count("web_minus_flange_ux"), 1u);
+  std::size_t particles = 0;
+  const double d = run_t_joint_lateral(6, &particles), a = ref.at("web_minus_flange_ux");
+  std::printf("[T-joint lateral] 6 layers, %zu particles: web u_x %.4e m (ccx %.4e, %+.2f %%)\n",
+              particles, d, a, 100 * rel(d, a));
+  EXPECT_NEAR(d / a, 1.0, 0.10);
+}
+
 // CI at 2 layers (the paper's thinnest skin), R/h = 20: measured −3.3 % (stiffer), as the
 // 2-layer ring's n = 2 frequency is +1.7 % (test_app_ring_modes.cpp).
 TEST(StaticStructures, RingDiametralCompressionAgainstCalculix) {
@@ -226,7 +298,15 @@ TEST(StaticStructures, DISABLED_OneRun) {
   const char* l = std::getenv("SLAMSPH_STATIC_LAYERS");
   const std::string which = c ? c : "t_joint";
   const int layers = l ? std::atoi(l) : 4;
-  if (which == "t_joint") {
+  if (which == "t_joint_lateral") {
+    const auto ref = ccx_reference("t_joint_lateral");
+    std::size_t particles = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    const double d = run_t_joint_lateral(layers, &particles);
+    const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("csv,t_joint_lateral,%d,%zu,web_minus_flange_ux,%.6e,%.6e,-,0,0,%.1f\n", layers,
+                particles, d, ref.at("web_minus_flange_ux"), sec);
+  } else if (which == "t_joint") {
     const auto ref = ccx_reference("t_joint");
     const TJointResult r = run_t_joint(layers);
     std::printf(
