@@ -12,6 +12,9 @@ conditions that remove the rigid modes without reactions.
   ring:    R/h = 20, h = 3 mm aluminium (E 67.5 GPa, nu 0.34), diametral compression by a
            pressure on the outer face over +-10 deg around the top and the bottom, total
            vertical force P = 2 p R_out sin(10 deg) = 1000 N/m each side.
+  stiffened_ring_L: a ring D 120 mm, skin 3 mm, with 8 "I" stringers (height 9 mm, web 3 mm,
+           flange 6 x 1.5 mm, first at 22.5 deg) on the fuselage builder's grid at L skin
+           layers, the same diametral compression (patch +-(k+1/2) arc steps ~ 10 deg).
   t_joint_lateral: the same T-joint with its web bent sideways by Q = 0.1 N/m on its top
            face (balanced on the flange: see t_joint_lateral()).
 
@@ -204,6 +207,88 @@ def ring(n_radial, n_theta, workdir, job):
             "vertical_diameter_change": radial(q) + radial(3 * q)}
 
 
+# Stiffened ring: a skin with 8 "I" stringers, the continuum the fuselage section builder
+# (geometry/fuselage_section.cpp) discretises: one polar grid of n = c round(2 pi r_mid /
+# (d c)) arc steps for skin and stringers, stringer webs and flanges whole numbers of arc
+# steps (measured on the inner skin face) centred on the stringer angle, rows of depth d.
+# The grid depends on the layer count, so the reference is computed per layer count.
+SR = dict(D=0.12, t=0.003, count=8, height=0.009, web=0.003, flange=0.006, flange_t=0.0015,
+          offset_deg=22.5, P=1000.0, E=67.5e9, nu=0.34, rho=2700.0)
+
+
+def stiffened_ring_grid(layers):
+    d = SR["t"] / layers
+    r_out = SR["D"] / 2
+    r_in = r_out - SR["t"]
+    r_mid = r_out - SR["t"] / 2
+    c = SR["count"]
+    n = c * max(1, round(2 * math.pi * r_mid / (d * c)))
+    dth = 2 * math.pi / n
+    arc_in = r_in * dth
+    m_w, m_f = round(SR["web"] / arc_in), round(SR["flange"] / arc_in)
+    if m_w < 2 or m_f < m_w + 1 or (m_f - m_w) % 2:
+        raise SystemExit(f"stiffened ring at {layers} layers: web {m_w}, flange {m_f} arc steps")
+    rows, rows_f = round(SR["height"] / d), round(SR["flange_t"] / d)
+    phase = 0.5 if m_w % 2 == 0 else 0.0
+    th0 = math.radians(SR["offset_deg"])
+    # Cells (r_lo, r_hi, j): angular extent th0 + (j + phase -/+ 1/2) dth.
+    cells = [(r_in + k * d, r_in + (k + 1) * d, j) for k in range(layers) for j in range(n)]
+    per = n // c
+    for s_ in range(c):
+        for q in range(rows):
+            flange = q < rows_f or q >= rows - rows_f
+            m = m_f if flange else m_w
+            for j in range(-(m // 2), -(m // 2) + m):
+                cells.append((r_in - (q + 1) * d, r_in - q * d, s_ * per + j))
+    k_patch = round(math.radians(10.0) / dth - 0.5)
+    alpha = (k_patch + 0.5) * dth  # patch edges on cell edges (90 deg is a cell centre)
+    return dict(d=d, r_in=r_in, r_out=r_out, n=n, dth=dth, th0=th0, phase=phase, cells=cells,
+                alpha=alpha, m_w=m_w, m_f=m_f, rows=rows, rows_f=rows_f)
+
+
+def stiffened_ring(layers, sub, workdir, job):
+    g = stiffened_ring_grid(layers)
+    n, dth, th0, phase = g["n"], g["dth"], g["th0"], g["phase"]
+    mesh = ccx_mesh.Mesh()
+    p = SR["P"] / (2 * g["r_out"] * math.sin(g["alpha"]))
+    loaded = []
+    for (lo, hi, j) in g["cells"]:
+        a0 = th0 + (j + phase - 0.5) * dth
+
+        def mapping(u, v, lo=lo, hi=hi, a0=a0):
+            r, a = lo + (hi - lo) * u, a0 + dth * v
+            return (r * math.cos(a), r * math.sin(a))
+        first = len(mesh.elements)
+        ccx_mesh.add_block(mesh, mapping, sub, sub)
+        if abs(hi - g["r_out"]) < 1e-12:
+            mid = th0 + (j + phase) * dth
+            for centre in (math.pi / 2, 3 * math.pi / 2):
+                dd = math.remainder(mid - centre, 2 * math.pi)
+                if abs(dd) < g["alpha"]:
+                    loaded += [first + (sub - 1) * sub + b + 1 for b in range(sub)]  # S2: r = hi
+    R = g["r_out"]
+    mesh.nsets["XSYM"] = [k for k, (x, y) in mesh.nodes.items() if abs(x) < 1e-9 * R]
+    mesh.nsets["YSYM"] = [k for k, (x, y) in mesh.nodes.items() if abs(y) < 1e-9 * R]
+    mesh.nsets["NALL"] = list(mesh.nodes)
+    step = ["*STEP", "*STATIC", "*BOUNDARY", "XSYM, 1, 1, 0.", "YSYM, 2, 2, 0.", "*DLOAD"]
+    step += [f"{el}, P2, {p:.12g}" for el in loaded]
+    step += ["*NODE PRINT, NSET=NALL", "U", "*END STEP"]
+    ccx_mesh.write_inp(os.path.join(workdir, job + ".inp"), mesh,
+                       {"E": SR["E"], "nu": SR["nu"], "rho": SR["rho"]}, step)
+    u = ccx_mesh.node_displacements(ccx_mesh.run_ccx(workdir, job))
+    r_mid = g["r_in"] + SR["t"] / 2
+
+    def radial(th):
+        x, y = r_mid * math.cos(th), r_mid * math.sin(th)
+        k = min(mesh.nodes, key=lambda q: (mesh.nodes[q][0] - x) ** 2 + (mesh.nodes[q][1] - y) ** 2)
+        X, Y = mesh.nodes[k]
+        if math.hypot(X - x, Y - y) > 1e-9:
+            raise SystemExit(f"no node on the mid-skin at {math.degrees(th)} deg")
+        return (u[k][0] * X + u[k][1] * Y) / r_mid
+    return {"horizontal_diameter_change": radial(0.0) + radial(math.pi),
+            "vertical_diameter_change": radial(math.pi / 2) + radial(3 * math.pi / 2)}
+
+
 def thin_ring_diameters():
     """Thin ring, two opposite point loads P (Roark, table 9.2 case 1): the horizontal
     diameter grows by (2/pi - 1/2) P R^3/(EI), the vertical one shrinks by (pi/4 - 2/pi)
@@ -233,10 +318,17 @@ def main():
     coarse = ring(2, n_theta // 2, workdir, "ring_coarse")
     for k in fine:
         rows.append(("ring", k, fine[k], coarse[k]))
+    for layers in (2, 4):
+        # Each particle cell in 8/L x 8/L elements (0.375 mm; coarse: 0.75 mm).
+        fine = stiffened_ring(layers, 8 // layers, workdir, f"stiffened_{layers}_fine")
+        coarse = stiffened_ring(layers, 4 // layers, workdir, f"stiffened_{layers}_coarse")
+        for k in fine:
+            rows.append((f"stiffened_ring_{layers}", k, fine[k], coarse[k]))
     dh, dv = thin_ring_diameters()
     with open(out, "w") as f:
         f.write("# scripts/calculix/static_cases.py: plane strain, CPE8; t_joint 0.625 mm elements "
-                "(coarse 1.25 mm), ring 4 x 720 (coarse 2 x 360)\n")
+                "(coarse 1.25 mm), ring 4 x 720 (coarse 2 x 360), stiffened rings 0.375 mm "
+                "(coarse 0.75 mm)\n")
         f.write(f"# thin ring, point loads: horizontal {dh:.6e} m, vertical {dv:.6e} m\n")
         f.write("case,quantity,value,coarse\n")
         for r in rows:
