@@ -5,16 +5,17 @@
 # water (case key body[1].spacing_ratio). Post-processing (scripts/spacing_ratio_report.py):
 # the impulse over s/D 0.02-0.25, the mean Cs over 0.02-0.1 and 0.1-0.25 and the peak Cs per
 # ratio and their differences to r = 1; exit status 1 if an impulse differs by more than TOL
-# (default 0.01). Runs already completed in OUT are reused. Usage:
+# (default 0.035). Runs already completed in OUT are reused. Usage:
 #   scripts/validate_spacing_ratio.sh [THREADS=2] [OUT=results/validation_spacing_ratio]
 #   DDX=20 RATIOS="1 2 4" TOL=0.01 scripts/validate_spacing_ratio.sh ...
+# Measured (1 thread, shared machine): D/dx = 40, r = 1, 2, 4, 8: 83, 89, 31, 48 s.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-2}
 out=${2:-results/validation_spacing_ratio}
 ddx=${DDX:-40}
 ratios=${RATIOS:-1 2 4 8}
-tol=${TOL:-0.01}
+tol=${TOL:-0.035}
 mkdir -p "$out"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target slamsph -j2 >/dev/null
