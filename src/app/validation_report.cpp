@@ -1,9 +1,12 @@
 #include "app/validation_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <utility>
 
 #include "io/csv_writer.h"
+#include "io/entry_series.h"
 #include "io/reference_curves.h"
 
 namespace slamsph {
@@ -24,7 +27,13 @@ PlotParams plot_params_for(const CaseConfig& cfg) {
     p.body = b.name;
     p.velocity = norm(b.velocity);
     p.radius = b.shape.type == "ring" ? b.shape.outer_radius : b.shape.radius;
-    p.t_contact = 0.0;  // cases place the lowest point on the still free surface at t = 0
+    p.t_contact = 0.0;  // used only without a body path (bodies.csv)
+    // The still free surface over the body: the top of the highest water block under its
+    // centre (s(t) = surface − lowest point; io/entry_series.h).
+    for (const FluidBlockConfig& blk : cfg.fluid.blocks)
+      if (blk.box.min.x <= b.shape.centre.x && b.shape.centre.x <= blk.box.max.x)
+        p.surface_y =
+            std::isnan(p.surface_y) ? blk.box.max.y : std::max(p.surface_y, blk.box.max.y);
     if (b.initial_profile == "cantilever_mode") {
       if (const MaterialConfig* m = cfg.find_material(b.material)) {
         const double L = b.shape.box.max.x - b.shape.box.min.x;
@@ -50,31 +59,75 @@ bool validation_report(const CaseConfig& cfg, const std::string& out_dir, JsonOb
   namespace fs = std::filesystem;
   const PlotParams p = plot_params_for(cfg);
   if (cfg.output.plot == "cylinder_entry" && fs::exists(out_dir + "/forces.csv") &&
-      p.velocity > 0.0 && p.radius > 0.0) {
-    const CsvTable t = read_csv(out_dir + "/forces.csv");
-    const int col = t.find(p.body + " Fy [N/m]");
-    if (col < 0) return false;
-    const std::vector<double>& time = t.columns[0];
-    const std::vector<double>& fy = t.columns[col];
-    const Peak peak = find_peak(time, fy);
-    const SlammingCase sc{p.density, p.velocity, p.radius, p.t_contact};
+      p.radius > 0.0) {
+    // Like with like (issue 9; docs/validation.md §3): Cs = F/(ρ V(t)² R) against s(t)/D
+    // from the body's actual path, t0 the geometric contact time. The peak is reported with
+    // its s/D, dx/s* and Mach number, not against a theory's F(0): it is an under-resolved
+    // acoustic event whose value depends on dx and c0 (docs/validation.md §1).
+    EntrySeries es;
+    std::string why;
+    if (!load_entry_series(out_dir, p.body, "", p.surface_y, p.radius, p.density, p.velocity,
+                           p.t_contact, es, why) ||
+        es.t.empty())
+      return false;
     out.set("kind", std::string("cylinder_entry"));
     out.set("body", p.body);
-    out.set("peak_force_N_per_m", peak.value);
-    out.set("peak_time_s", peak.time);
-    out.set("peak_s_over_D", p.velocity * (peak.time - p.t_contact) / (2.0 * p.radius));
-    for (SlammingTheory th :
-         {SlammingTheory::CampbellWeynberg, SlammingTheory::VonKarman, SlammingTheory::Wagner}) {
-      JsonObject o;
-      const double ref = slamming_force(th, 0.0, p.density, p.velocity, p.radius);
-      o.set("reference_peak_N_per_m", ref);
-      o.set("peak_relative_error", relative_error(peak.value, ref));
-      const SeriesError he = slamming_history_error(time, fy, th, sc, 0.05, 0.3);
-      o.set("history_rms_relative_error_sD_0.05_0.3", he.rms);
-      o.set("history_max_relative_error_sD_0.05_0.3", he.max_abs);
-      o.set("history_samples", static_cast<long>(he.samples));
-      out.set(slamming_theory_name(th), o);
+    out.set("t0_geometric_contact_s", es.t0);
+    out.set("t0_from_body_path", es.t0_from_path);
+    out.set("speed_at_contact_m_per_s", es.speed_at_contact);
+    std::vector<double> vt, vv;
+    for (double ms : {0.0, 2.0, 5.0, 10.0, 20.0, 30.0, 40.0, 50.0}) {
+      const double v = interpolate(es.t, es.v, 1e-3 * ms);
+      if (std::isnan(v)) continue;
+      vt.push_back(1e-3 * ms);
+      vv.push_back(v);
     }
+    out.set("velocity_history_t_minus_t0_s", vt);
+    out.set("velocity_history_m_per_s", vv);
+    std::size_t ipk = 0;
+    for (std::size_t k = 1; k < es.f.size(); ++k)
+      if (es.f[k] > es.f[ipk]) ipk = k;
+    JsonObject pk;
+    pk.set("force_N_per_m", es.f[ipk]);
+    pk.set("t_minus_t0_s", es.t[ipk]);
+    pk.set("s_over_D", es.sd[ipk]);
+    pk.set("Cs", es.cs[ipk]);
+    // s* = R V²/c0²: the submergence where the acoustic stage ends.
+    const double c0 = cfg.fluid.sound_speed, vpk = es.v[ipk];
+    pk.set("dx_over_acoustic_depth", cfg.numerics.dx * c0 * c0 / (p.radius * vpk * vpk));
+    pk.set("mach", vpk / c0);
+    out.set("peak", pk);
+    // Mean Cs over windows after the peak and before the tank echo: 0.05-0.25 (von Karman
+    // and Campbell-Weynberg) and 0.05-0.15 (where every theory is defined).
+    std::vector<JsonObject> means;
+    for (const auto& [lo, hi] : {std::pair{0.05, 0.25}, std::pair{0.05, 0.15}}) {
+      const WindowMean m = mean_cs(es, lo, hi);
+      JsonObject mo;
+      mo.set("s_over_D_range", std::vector<double>{lo, hi});
+      mo.set("samples", static_cast<long>(m.samples));
+      if (m.samples == 0) {
+        means.push_back(mo);
+        continue;
+      }
+      mo.set("Cs", m.value);
+      for (SlammingTheory th : all_slamming_theories()) {
+        JsonObject o;
+        o.set("two_dimensional", slamming_theory_is_2d(th));
+        double acc = 0.0;
+        for (std::size_t k = 0; k < es.sd.size(); ++k)
+          if (es.sd[k] >= lo && es.sd[k] <= hi && std::isfinite(es.cs[k]))
+            acc += slamming_coefficient(th, es.sd[k]);
+        if (std::isfinite(acc)) {
+          o.set("Cs", acc / double(m.samples));
+          o.set("relative_difference", m.value / (acc / double(m.samples)) - 1.0);
+        } else {
+          o.set("Cs", std::string("not defined over the whole window"));
+        }
+        mo.set(slamming_theory_name(th), o);
+      }
+      means.push_back(mo);
+    }
+    out.set("mean_Cs", means);
     return true;
   }
   if (cfg.output.plot == "dam_break" && fs::exists(out_dir + "/probes.csv") && p.dam_width > 0) {

@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "io/csv_writer.h"
+#include "io/entry_series.h"
 #include "io/reference_curves.h"
 
 namespace slamsph {
@@ -41,6 +42,13 @@ std::string apct(double rel) {
 std::string snum(double v) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.5g", v);
+  return buf;
+}
+
+// Fixed-point number with `decimals` digits after the point.
+std::string fnum(double v, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
 }
 
@@ -216,90 +224,105 @@ bool load_tip_columns(const std::string& out_dir, const PlotParams& p, std::stri
 
 int plot_cylinder_entry(const std::string& out_dir, const PlotParams& p, const std::string& gnuplot,
                         std::string& message) {
-  if (!(p.velocity > 0.0) || !(p.radius > 0.0)) {
-    message = "plot cylinder_entry: velocity and radius must be > 0";
+  if (!(p.radius > 0.0)) {
+    message = "plot cylinder_entry: the radius must be > 0";
     return kMissing;
   }
-  CsvTable t;
-  if (!load(out_dir, "forces.csv", t, message)) return kMissing;
-  int col = -1;
-  std::string want = p.column;
-  if (want.empty() && !p.body.empty()) want = p.body + " Fy [N/m]";
-  if (!want.empty()) {
-    col = t.find(want);
+  // Cs = F/(ρ V(t)² R) against s(t)/D with the body's actual path (constant-speed references
+  // compared like with like; docs/validation.md §3).
+  EntrySeries es;
+  std::string why;
+  if (!load_entry_series(out_dir, p.body, p.column, p.surface_y, p.radius, p.density, p.velocity,
+                         p.t_contact, es, why)) {
+    message = "plot cylinder_entry: " + why;
+    return kMissing;
+  }
+  if (es.t.empty()) {
+    message = "plot cylinder_entry: no force sample inside the body path's time range";
+    return kMissing;
+  }
+  write_entry_series(es, out_dir + "/slamming_cs.csv");
+
+  // Metrics for the message: the peak (an under-resolved acoustic event, reported as what
+  // it is, not against a theory's F(0)) and the mean Cs over s/D 0.05-0.25.
+  std::size_t ipk = 0;
+  for (std::size_t k = 1; k < es.f.size(); ++k)
+    if (es.f[k] > es.f[ipk]) ipk = k;
+  std::string metrics =
+      "contact t0 = " + fnum(1e3 * es.t0, 3) + " ms" + (es.t0_from_path ? "" : " (extrapolated)") +
+      ", V(t0) = " + fnum(es.speed_at_contact, 3) + " m/s; peak " + snum(es.f[ipk]) +
+      " N/m at t - t0 = " + fnum(1e3 * es.t[ipk], 2) + " ms, s/D " + fnum(es.sd[ipk], 4) + ", Cs " +
+      fnum(es.cs[ipk], 2) + " (an acoustic event: dx- and c0-dependent)";
+  const WindowMean m = mean_cs(es, 0.05, 0.25);
+  if (m.samples > 0) {
+    metrics += "; mean Cs over s/D 0.05-0.25 " + fnum(m.value, 3);
+    for (SlammingTheory th : {SlammingTheory::VonKarman, SlammingTheory::CampbellWeynberg}) {
+      double acc = 0.0;
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < es.sd.size(); ++k)
+        if (es.sd[k] >= 0.05 && es.sd[k] <= 0.25 && std::isfinite(es.cs[k]))
+          acc += slamming_coefficient(th, es.sd[k]), ++n;
+      metrics += std::string(", vs ") + slamming_theory_name(th) +
+                 (slamming_theory_is_2d(th) ? " (2D) " : " (3D fit) ") + fnum(acc / double(n), 3) +
+                 ": " + pct(m.value / (acc / double(n)) - 1.0);
+    }
   } else {
-    for (std::size_t i = 1; i < t.headers.size() && col < 0; ++i)
-      if (ends_with(t.headers[i], "Fy [N/m]")) col = static_cast<int>(i);
+    metrics += "; the run does not reach s/D 0.05-0.25";
   }
-  if (col < 1) {
-    message = "plot cylinder_entry: column \"" + (want.empty() ? "<body> Fy [N/m]" : want) +
-              "\" not in " + out_dir + "/forces.csv (columns: " + list_headers(t) + ")";
-    return kMissing;
-  }
-  const std::string hdr = t.headers[static_cast<std::size_t>(col)];
-  const auto& time = t.columns[0];
-  const auto& force = t.columns[static_cast<std::size_t>(col)];
-  const double d = 2.0 * p.radius;
-  const SlammingCase sc{p.density, p.velocity, p.radius, p.t_contact};
 
-  // Metrics for the message and the plot title.
-  const Peak pk = find_peak(time, force);
-  const double pk_sd = p.velocity * (pk.time - p.t_contact) / d;
-  std::string metrics = "peak " + snum(pk.value) +
-                        " N/m at t - t0 = " + snum(1e3 * (pk.time - p.t_contact)) + " ms (s/D " +
-                        snum(pk_sd) + ")";
-  std::string hist;
-  for (SlammingTheory th :
-       {SlammingTheory::CampbellWeynberg, SlammingTheory::VonKarman, SlammingTheory::Wagner}) {
-    const double ref0 = slamming_force(th, 0.0, p.density, p.velocity, p.radius);
-    metrics += std::string("; vs ") + slamming_theory_name(th) + " F(0) " + snum(ref0) + ": " +
-               pct(relative_error(pk.value, ref0));
-    if (th == SlammingTheory::Wagner) continue;
-    const SeriesError e = slamming_history_error(time, force, th, sc);
-    hist += std::string(hist.empty() ? "" : "; ") + slamming_theory_name(th) + " rms " +
-            (e.samples ? apct(e.rms) : "n/a") + " max " + (e.samples ? apct(e.max_abs) : "n/a");
-  }
-  metrics += "; history s/D 0.05-0.3: " + hist;
-
-  const std::string common = "rho = " + num(p.density) + "\nV = " + num(p.velocity) +
-                             "\nR = " + num(p.radius) + "\nD = 2*R\nt0 = " + num(p.t_contact) +
-                             "\nq = rho*V**2*R\n" +
-                             "cw(x) = x < 0 ? NaN : 5.15/(1 + 19*x) + 0.55*x\n"
-                             "vk(x) = (x < 0 || x > 0.5) ? NaN : pi*(1 - 2*x)\n"
-                             "wa(x) = x < 0 ? NaN : 2*pi\nset samples 500\n";
-  const std::string ycol = "(column(" + std::to_string(col + 1) + "))";
-
-  std::string s = preamble("slamming_force.png") + common;
-  s += "sd(tms) = V*tms*1e-3/D\n";
-  s += set_title("Cylinder water entry: " + hdr, p);
-  s += "set xlabel 'time since contact t - t0 [ms]'\nset ylabel 'vertical force Fy [N/m]'\n";
-  s += "set x2label 'submergence s/D [-]'\nset x2tics\nset xtics nomirror\n";
-  s += "set link x2 via V*x*1e-3/D inverse x*D/V*1e3\n";
-  s += "set format x2 '%.3g'\n";
+  // slamming_cs.csv columns: 1 t - t0, 2 s/D, 3 V, 4 F, 5 Cs, 6-10 Cs of CW, von Karman,
+  // Wagner, Wagner circle, modified Logvinovich, 11-15 their forces with the actual V.
+  const std::string hdr = p.body.empty() ? std::string("body") : p.body;
+  const std::string refs_t =
+      "     '' skip 1 using ($1*1e3):11 with lines dt 2 lw 2 lc rgb '#d62728' title "
+      "'Campbell-Weynberg (3D fit)', \\\n"
+      "     '' skip 1 using ($1*1e3):12 with lines dt 3 lw 2 lc rgb '#2ca02c' title 'von Karman "
+      "(2D)', \\\n"
+      "     '' skip 1 using ($1*1e3):14 with lines dt 4 lw 2 lc rgb '#9467bd' title 'Wagner, "
+      "exact circle (2D)', \\\n"
+      "     '' skip 1 using ($1*1e3):15 with lines dt 5 lw 2 lc rgb '#ff7f0e' title 'modified "
+      "Logvinovich (2D)'\n";
+  std::string s = preamble("slamming_force.png");
+  s += set_title("Cylinder water entry: " + hdr + " Fy; references with the actual V(t), s(t)", p);
+  s += "set xlabel 'time since geometric contact t - t0 [ms]'\nset ylabel 'vertical force Fy "
+       "[N/m]'\n";
   s += "set autoscale xfix\n";
-  s += "set label 1 sprintf('peak %.0f N/m', " + num(pk.value) + ") at " +
-       num(1e3 * (pk.time - p.t_contact)) + "," + num(pk.value) +
-       " point pt 7 ps 1.5 offset 1,0.5\n";
-  s += "plot 'forces.csv' skip 1 using (($1 - t0)*1e3):" + ycol +
-       " with lines lw 2 lc rgb '#1f77b4' title " + gp_str("SPH " + hdr) + ", \\\n";
-  s += "     q*cw(sd(x)) with lines dt 2 lw 2 lc rgb '#d62728' title 'Campbell-Weynberg', \\\n";
-  s += "     q*vk(sd(x)) with lines dt 3 lw 2 lc rgb '#2ca02c' title 'von Karman', \\\n";
-  s += "     q*wa(sd(x)) with lines dt 4 lw 2 lc rgb '#9467bd' title 'Wagner'\n";
+  s += "plot 'slamming_cs.csv' skip 1 using ($1*1e3):4 with lines lw 2 lc rgb '#1f77b4' title " +
+       gp_str("SPH " + hdr) + ", \\\n" + refs_t;
   int rc = run_script(out_dir, "slamming_force", s, gnuplot, message);
   if (rc != kOk) return rc;
 
-  s = preamble("slamming_coefficient.png") + common;
-  s += set_title("Slamming coefficient Cs = F/(rho V^2 R): " + hdr, p);
-  s += "set xlabel 'submergence s/D = V (t - t0)/D [-]'\nset ylabel 'Cs [-]'\n";
+  s = preamble("slamming_coefficient.png");
+  s += set_title("Slamming coefficient Cs = F/(rho V(t)^2 R) against s(t)/D: " + hdr, p);
+  s += "set xlabel 'submergence s/D [-]'\nset ylabel 'Cs [-]'\n";
   s += "set xrange [0:*]\nset yrange [0:*]\n";
-  s += "plot 'forces.csv' skip 1 using (V*($1 - t0)/D):(" + ycol + "/q)" +
-       " with lines lw 2 lc rgb '#1f77b4' title " + gp_str("SPH " + hdr) + ", \\\n";
-  s += "     cw(x) with lines dt 2 lw 2 lc rgb '#d62728' title 'Campbell-Weynberg', \\\n";
-  s += "     vk(x) with lines dt 3 lw 2 lc rgb '#2ca02c' title 'von Karman', \\\n";
-  s += "     wa(x) with lines dt 4 lw 2 lc rgb '#9467bd' title 'Wagner'\n";
+  s += "plot 'slamming_cs.csv' skip 1 using 2:5 with lines lw 2 lc rgb '#1f77b4' title " +
+       gp_str("SPH " + hdr) + ", \\\n";
+  s +=
+      "     '' skip 1 using 2:6 with lines dt 2 lw 2 lc rgb '#d62728' title 'Campbell-Weynberg (3D "
+      "fit)', \\\n";
+  s += "     '' skip 1 using 2:7 with lines dt 3 lw 2 lc rgb '#2ca02c' title 'von Karman (2D)', "
+       "\\\n";
+  s += "     '' skip 1 using 2:9 with lines dt 4 lw 2 lc rgb '#9467bd' title 'Wagner, exact circle "
+       "(2D)', \\\n";
+  s +=
+      "     '' skip 1 using 2:10 with lines dt 5 lw 2 lc rgb '#ff7f0e' title 'modified Logvinovich "
+      "(2D)'\n";
   rc = run_script(out_dir, "slamming_coefficient", s, gnuplot, message);
   if (rc != kOk) return rc;
-  message = "wrote slamming_force.png, slamming_coefficient.png; " + hdr + ": " + metrics;
+
+  s = preamble("entry_velocity.png", 1000, 500);
+  s += set_title("Entry speed V(t) = -v_y of " + hdr + " (centre of mass)", p);
+  s += "set xlabel 'time since geometric contact t - t0 [ms]'\nset ylabel 'V [m/s]'\n";
+  s += "set autoscale xfix\n";
+  s += "plot 'slamming_cs.csv' skip 1 using ($1*1e3):3 with lines lw 2 lc rgb '#1f77b4' title " +
+       gp_str("SPH " + hdr) + "\n";
+  rc = run_script(out_dir, "entry_velocity", s, gnuplot, message);
+  if (rc != kOk) return rc;
+  message =
+      "wrote slamming_force.png, slamming_coefficient.png, entry_velocity.png, "
+      "slamming_cs.csv; " +
+      hdr + ": " + metrics;
   return kOk;
 }
 

@@ -4,11 +4,15 @@
 // rerun by hand (`cd out && gnuplot slamming_force.gp`).
 //
 // Kinds (output.plot in the case file):
-//  "cylinder_entry": forces.csv column "<body> Fy [N/m]" (p.body, or the first column
-//      ending in "Fy [N/m]") → slamming_force.png (F against t − t_contact in ms, second
-//      axis s/D) and slamming_coefficient.png (Cs against s/D), each with the
-//      Campbell–Weynberg, von Kármán and Wagner curves (reference_curves.h). Needs
-//      p.velocity and p.radius.
+//  "cylinder_entry": forces.csv column "<body> Fy [N/m]" (p.body, or p.column) and the
+//      body's path in bodies.csv ("<body> com_y [m]", "<body> vel_y [m/s]") with the still
+//      surface p.surface_y: the series Cs = F/(ρ V(t)² R) against s(t)/D, t0 the geometric
+//      contact time (io/entry_series.h; without a path: constant p.velocity from
+//      p.t_contact) → slamming_cs.csv, slamming_force.png (F against t − t0 with each
+//      theory's force at the actual V(t), s(t)), slamming_coefficient.png (Cs against s/D)
+//      and entry_velocity.png (V against t − t0); references: Campbell–Weynberg (3D fit),
+//      von Kármán, Wagner and modified Logvinovich with the exact circle (2D;
+//      reference_curves.h). Needs p.radius.
 //  "dam_break": probes.csv column "surge_front [m]" (or p.column; else the first column
 //      whose name contains "front" with unit [m]) → surge_front.png,
 //      Z = (x − p.wall_x)/a against T = t sqrt(2g/a) with the Martin & Moyce and
@@ -25,18 +29,21 @@
 // 3 gnuplot failed. `message` says what was written (with peak and error metrics) or
 // what went wrong.
 #pragma once
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace slamsph {
 
 struct PlotParams {
-  std::string column;               // override the column looked up by a kind ("" = default)
-  std::string body;                 // cylinder_entry: body whose force is plotted
-  double density = 1000.0;          // cylinder_entry: fluid density ρ [kg/m^3]
-  double velocity = 0.0;            // cylinder_entry: entry speed V [m/s]
-  double radius = 0.0;              // cylinder_entry: R [m]
-  double t_contact = 0.0;           // cylinder_entry: time of first contact [s]
+  std::string column;       // override the column looked up by a kind ("" = default)
+  std::string body;         // cylinder_entry: body whose force is plotted
+  double density = 1000.0;  // cylinder_entry: fluid density ρ [kg/m^3]
+  double velocity = 0.0;    // cylinder_entry: entry speed V [m/s]
+  double radius = 0.0;      // cylinder_entry: R [m]
+  double t_contact = 0.0;   // cylinder_entry: contact time if there is no body path [s]
+  // cylinder_entry: still free-surface level [m]; with bodies.csv, s(t) from the body's path.
+  double surface_y = std::numeric_limits<double>::quiet_NaN();
   double dam_width = 0.0;           // dam_break: initial column width a [m]
   double gravity = 9.81;            // dam_break: |g| [m/s^2]
   double wall_x = 0.0;              // dam_break: x of the wall the column rests against [m]

@@ -262,8 +262,8 @@ std::string small_case() {
   std::string text = slurp(fs::path(SLAMSPH_SOURCE_DIR) / "cases" / "elastic_cylinder_entry.toml");
   const std::vector<std::pair<std::string, std::string>> edits{
       {"\ndx = 0.005", "\ndx = 0.01"},
-      {"centre = [0.5, 0.5]", "centre = [0.5, 0.48]"},
-      {"interval = 0.0025", "interval = 0.0005"},
+      {"centre = [0.5, 0.515]", "centre = [0.5, 0.48]"},
+      {"interval = 0.001 ", "interval = 0.0005 "},
       {"probe_interval = 0.0", "probe_interval = 0.0002"}};
   for (const auto& [from, to] : edits) {
     const std::size_t at = text.find(from);
