@@ -1,6 +1,7 @@
 #include "app/case_builder.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/error.h"
 #include "coupling/surface_normals.h"
@@ -136,6 +137,22 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.hydrostatic_correction = cfg.fluid.hydrostatic_correction;
   p.substep_average = num.substep_average;
   p.neighbour_skin = num.neighbour_skin;
+  if (cfg.fluid.absorbing_zone.active()) {
+    // The zone lines the walls of the case's one tank (checked by the parser); the
+    // hydrostatic reference is the still surface of the highest water block.
+    const AbsorbingZoneConfig& a = cfg.fluid.absorbing_zone;
+    AbsorbingZone& z = p.absorbing_zone;
+    for (const BodyConfig& b : cfg.bodies)
+      if (b.shape.type == "tank") z.inner = b.shape.box;
+    z.width = {a.left, a.right, a.bottom, a.top};
+    for (int w = 0; w < 4; ++w)
+      z.sigma_wall[w] = z.width[w] > 0.0 ? a.strength * cfg.fluid.sound_speed / z.width[w] : 0.0;
+    z.surface = -std::numeric_limits<double>::infinity();
+    for (const FluidBlockConfig& blk : cfg.fluid.blocks)
+      z.surface = std::max(z.surface, blk.surface);
+    if (cfg.fluid.blocks.empty()) z.surface = z.inner.min.y;
+    z.gravity = num.gravity;
+  }
 
   FsiSystem& s = out.system;
   s.kernel_f = Kernel(num.kernel, num.h_over_dx * num.dx);

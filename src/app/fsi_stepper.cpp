@@ -98,6 +98,8 @@ void FsiStepper::step() {
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos.pressure(f.rho[i]);
   });
+  // Acoustic damping near the chosen tank walls, over the whole step (absorbing_zone.h).
+  apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
   ++steps_;
   check_state();
 }

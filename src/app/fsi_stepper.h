@@ -31,6 +31,7 @@
 #include "coupling/contact_particles.h"
 #include "coupling/interaction_lists.h"
 #include "coupling/substep_average.h"
+#include "fluid/absorbing_zone.h"
 #include "fluid/fluid_particles.h"
 #include "fluid/tait_eos.h"
 #include "solid/solid_body.h"
@@ -55,7 +56,8 @@ struct FsiParams {
   // The fluid sees sub-cycled bodies' velocity and acceleration averaged over the fluid step
   // (coupling/substep_average.h) instead of those of the last sub-step.
   bool substep_average = true;
-  double neighbour_skin = 0.2;  // Verlet skin as a fraction of the contact support [-]
+  double neighbour_skin = 0.2;   // Verlet skin as a fraction of the contact support [-]
+  AbsorbingZone absorbing_zone;  // damping bands along tank walls (inactive by default)
 };
 
 // The particle sets and their kernels, as the case builder lays them out.

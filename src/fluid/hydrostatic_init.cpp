@@ -5,6 +5,13 @@
 
 namespace slamsph {
 
+double hydrostatic_pressure(double depth, double g, const TaitEos& eos) {
+  // Using rho0 g z instead leaves a 1 % density mismatch at 0.5 m depth (c0 = 20 m/s) that
+  // the static-state term of the Riemann U* (riemann_solver.h) turns into a density drift.
+  const double B = eos.stiffness(), gm = eos.gamma, z = std::max(0.0, depth);
+  return B * (std::pow(1.0 + (gm - 1.0) / gm * eos.rho0 * g * z / B, gm / (gm - 1.0)) - 1.0);
+}
+
 void append_hydrostatic_block(FluidParticles& f, const std::vector<Vec2>& pts, double dx,
                               double surface, Vec2 gravity, const TaitEos& eos) {
   const std::size_t n0 = f.size();
@@ -12,14 +19,7 @@ void append_hydrostatic_block(FluidParticles& f, const std::vector<Vec2>& pts, d
   const double g = std::abs(gravity.y);
   for (std::size_t k = 0; k < pts.size(); ++k) {
     const std::size_t i = n0 + k;
-    const double depth = std::max(0.0, surface - pts[k].y);
-    // Exact hydrostatics of the Tait fluid, dp/dz = rho(p) g: with B = rho0 c0^2/gamma,
-    // p = B [(1 + (gamma-1)/gamma rho0 g z / B)^(gamma/(gamma-1)) - 1]. Using rho0 g z
-    // instead leaves a 1 % density mismatch at 0.5 m depth (c0 = 20 m/s) that the
-    // static-state term of the Riemann U* (riemann_solver.h) turns into a density drift.
-    const double B = eos.stiffness(), gm = eos.gamma;
-    const double p =
-        B * (std::pow(1.0 + (gm - 1.0) / gm * eos.rho0 * g * depth / B, gm / (gm - 1.0)) - 1.0);
+    const double p = hydrostatic_pressure(surface - pts[k].y, g, eos);
     f.x[i] = pts[k];
     f.v[i] = Vec2{};
     f.a[i] = Vec2{};

@@ -36,6 +36,15 @@ struct FluidBlockConfig {
   double surface = 0.0;  // still free-surface height for hydrostatic init [m] (default box.max.y)
 };
 
+// Absorbing (damping) zone along chosen walls of the case's tank (fluid/absorbing_zone.h,
+// docs/case_format.md [fluid.absorbing_zone]).
+struct AbsorbingZoneConfig {
+  // Band width per wall of the tank's inner box [m]; 0 = no zone at that wall.
+  double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
+  double strength = 10.0;  // σ at the wall = strength · c0 / width [-]
+  bool active() const { return left > 0.0 || right > 0.0 || bottom > 0.0 || top > 0.0; }
+};
+
 struct FluidConfig {
   double density = 1000.0;     // rest density rho0 [kg/m^3]
   double sound_speed = 0.0;    // artificial sound speed c0 [m/s] (required)
@@ -48,6 +57,7 @@ struct FluidConfig {
   // Static-state (hydrostatic) term in the Riemann U* of fluid pairs and of the contact
   // (docs/model.md §2): right at rest under gravity, wrong away from it (free fall).
   bool hydrostatic_correction = true;
+  AbsorbingZoneConfig absorbing_zone;
   std::vector<FluidBlockConfig> blocks;
 };
 

@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.h"
 #include "geometry/shape_bounds.h"
@@ -195,7 +196,7 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
   auto r = root.table("fluid", "a [fluid] table");
   if (!r) return f;
   r->allow({"density", "sound_speed", "gamma", "limiter_omega", "viscosity", "cavitation_pressure",
-            "hydrostatic_correction", "block"});
+            "hydrostatic_correction", "absorbing_zone", "block"});
   f.density = num(*r, "density", positive("a positive density in kg/m^3"), 1000.0);
   f.sound_speed = num(*r, "sound_speed", positive("a positive sound speed in m/s"));
   f.gamma = num(*r, "gamma", {1.0, kInf, false, false, "a Tait exponent >= 1"}, 7.0);
@@ -205,6 +206,20 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
       num(*r, "cavitation_pressure",
           {-kInf, 0.0, false, false, "a gauge pressure <= 0 in Pa (e.g. -101325)"}, -101325.0);
   f.hydrostatic_correction = r->boolean("hydrostatic_correction").value_or(true);
+  if (auto z = r->table("absorbing_zone", "a table [fluid.absorbing_zone] with wall widths")) {
+    z->allow({"left", "right", "bottom", "top", "strength"});
+    AbsorbingZoneConfig& a = f.absorbing_zone;
+    const Rule width = non_negative("a band width >= 0 in m along that tank wall (0 = none)");
+    a.left = num(*z, "left", width, 0.0);
+    a.right = num(*z, "right", width, 0.0);
+    a.bottom = num(*z, "bottom", width, 0.0);
+    a.top = num(*z, "top", width, 0.0);
+    a.strength =
+        num(*z, "strength", positive("a damping strength > 0 (sigma = strength c0 / width)"), 10.0);
+    if (!a.active())
+      z->bad("left", "no wall has a zone",
+             "a width > 0 for at least one of left, right, bottom, top", "all 0");
+  }
   blocks = r->table_array("block", "[[fluid.block]] tables with min and max");
   for (const Reader& b : blocks) {
     b.allow({"min", "max", "surface"});
@@ -819,6 +834,30 @@ CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
             "fluid block " + box_text(c.fluid.blocks[i].box) + " lies outside the tank's inner box",
             "a block inside the tank's inner box " + box_text(tanks[0]));
     }
+
+  // The absorbing zone lies along the walls of the case's tank and inside it.
+  if (c.fluid.absorbing_zone.active()) {
+    const auto fr = root.table("fluid", "");
+    const auto zr = fr->table("absorbing_zone", "");
+    if (tanks.empty())
+      zr->bad("left", "the case has no tank",
+              "a body with shape type = \"tank\" whose walls the zone lines", "no tank");
+    if (tanks.size() > 1)
+      zr->bad("left", "the case has " + std::to_string(tanks.size()) + " tanks",
+              "exactly one tank body (the zone lines its walls)", "several tanks");
+    const AbsorbingZoneConfig& a = c.fluid.absorbing_zone;
+    const Box& t = tanks[0];
+    const double wx = t.max.x - t.min.x, wy = t.max.y - t.min.y;
+    for (const auto& [key, w, span] :
+         {std::tuple{"left", a.left, wx}, std::tuple{"right", a.right, wx},
+          std::tuple{"bottom", a.bottom, wy}, std::tuple{"top", a.top, wy}})
+      zr->check(w < span, key, "wider than the tank's inner box (" + pretty(span) + " m)",
+                "a width < " + pretty(span) + " m", w);
+    zr->check(a.left + a.right < wx, "right", "left + right bands cover the whole tank width",
+              "left + right < " + pretty(wx) + " m", a.left + a.right);
+    zr->check(a.bottom + a.top < wy, "top", "bottom + top bands cover the whole tank height",
+              "bottom + top < " + pretty(wy) + " m", a.bottom + a.top);
+  }
 
   c.output = parse_output(root, c);
 

@@ -96,6 +96,15 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "viscosity = " << d(f.viscosity) << "  # [m^2/s]\n";
     o << "cavitation_pressure = " << d(f.cavitation_pressure) << "  # [Pa] gauge\n";
     o << "hydrostatic_correction = " << b(f.hydrostatic_correction) << "\n";
+    if (f.absorbing_zone.active()) {
+      const AbsorbingZoneConfig& z = f.absorbing_zone;
+      o << "\n[fluid.absorbing_zone]\n";
+      o << "left = " << d(z.left) << "  # [m]\n";
+      o << "right = " << d(z.right) << "  # [m]\n";
+      o << "bottom = " << d(z.bottom) << "  # [m]\n";
+      o << "top = " << d(z.top) << "  # [m]\n";
+      o << "strength = " << d(z.strength) << "\n";
+    }
     for (const auto& bl : f.blocks) {
       o << "\n[[fluid.block]]\n";
       box(o, bl.box);

@@ -416,3 +416,29 @@ TEST(IoCaseErrors, MaterialModelParsedToTypedValue) {
   EXPECT_TRUE(std::holds_alternative<SvkModel>(
       parse_case_string(kBase, "cases/base.toml").find_material("rubber")->model));
 }
+
+TEST(IoCaseErrors, AbsorbingZoneIsChecked) {
+  const std::string zone = "[fluid.absorbing_zone]\nbottom = 0.1\nright = 0.2\n\n[[fluid.block]]";
+  const std::string ok = replace_line(kBase, "[[fluid.block]]", zone);
+  EXPECT_EQ(error_of(ok), "(no error)");
+  const std::string wide = replace_line(ok, "bottom = 0.1", "bottom = 1.5");
+  expect_error(wide, line_of(wide, "bottom"), "fluid.absorbing_zone.bottom",
+               "wider than the tank's inner box (1 m)");
+  const std::string both = replace_line(ok, "bottom = 0.1", "left = 0.9");
+  expect_error(both, line_of(both, "right"), "fluid.absorbing_zone.right",
+               "left + right bands cover the whole tank width");
+  const std::string none =
+      replace_line(replace_line(ok, "bottom = 0.1", "bottom = 0"), "right = 0.2", "strength = 5");
+  expect_error(none, line_of(none, "[fluid.absorbing_zone]"), "fluid.absorbing_zone.left",
+               "no wall has a zone");
+  const std::string neg = replace_line(ok, "right = 0.2", "right = -0.2");
+  expect_error(neg, line_of(neg, "right"), "fluid.absorbing_zone.right", "must be >= 0");
+  const std::string weak = replace_line(ok, "right = 0.2", "strength = 0");
+  expect_error(weak, line_of(weak, "strength"), "fluid.absorbing_zone.strength", "must be > 0");
+  const std::string typo = replace_line(ok, "right = 0.2", "rigth = 0.2");
+  expect_error(typo, line_of(typo, "rigth"), "fluid.absorbing_zone.rigth", "did you mean 'right'?");
+  // Without a tank there are no walls to line.
+  const std::string no_tank = replace_line(ok, "type = \"tank\"", "type = \"rectangle\"");
+  expect_error(no_tank, line_of(no_tank, "[fluid.absorbing_zone]"), "fluid.absorbing_zone.left",
+               "the case has no tank");
+}
