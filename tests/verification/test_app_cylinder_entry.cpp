@@ -3,14 +3,16 @@
 // 2.33 m/s at the surface, reported like the full case: t0 = the geometric contact time,
 // Cs = F/(ρ V(t)² R) against s(t)/D from the body's actual path (io/entry_series.h).
 // Bands come from the resolution study of this case (scripts/validate_cylinder.sh, h = 1.38
-// dx, 1 thread; numbers in docs/validation.md §3), not from a theory:
-//   dx [mm]               10      5       2.5
-//   mean Cs, s/D .05-.25  1.9876  1.9357  BAND_25
-//   peak Cs               5.000   5.229   BAND_PK
-// The bands below are a few per cent around the dx = 10 mm values, narrower than the
-// change per halving of dx: a broken contact (force halved, no Riemann dissipation, no
-// (g − a) term, a flipped static term, doubled continuity) moves them by more
-// (scripts/mutation_check.sh).
+// dx, 1 thread; docs/validation.md §3), not from a theory:
+//   dx [mm]                      10      5       2.5
+//   V(t0) [m/s]                  2.270   2.302   2.316
+//   mean Cs over s/D 0.05-0.25   1.9876  1.9357  1.8442   (not yet monotone: GCI 15 %)
+//   peak Cs                      5.000   5.229   4.572    (an acoustic event)
+// The study does not converge far enough to give a converged value with a small
+// uncertainty, so the bands hold the dx = 10 mm values within 2-3 %, narrower than the
+// change per halving of dx (3-5 % for the mean, 5-13 % for the peak): a broken contact
+// (force halved, no Riemann dissipation, no (g - a) term, a flipped static term, doubled
+// continuity) moves them by more (scripts/mutation_check.sh).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,7 +73,7 @@ TEST(CylinderEntry, ReducedPaperCaseMatchesItsResolutionStudy) {
       late.samples, max_before_overlap, sim.leaked_particles());
   EXPECT_EQ(max_before_overlap, 0.0);  // no force across the gap before the kernels overlap
   // The kernel-range force acts from a gap of 2h − dx: 2.6 % of the speed is lost by t0.
-  EXPECT_NEAR(s.speed_at_contact / 2.2698, 1.0, 0.002);
+  EXPECT_NEAR(s.speed_at_contact / 2.2715, 1.0, 0.002);  // per-step path (2.2698 from 1 ms rows)
   EXPECT_NEAR(late.value / 1.9876, 1.0, 0.02);
   EXPECT_NEAR(s.cs[ipk] / 5.000, 1.0, 0.03);
   EXPECT_GT(s.sd[ipk], 0.0);  // the peak is the slam after contact, not the approach
