@@ -4,8 +4,8 @@
 # breakage must make at least one test fail. Prints a table (and writes OUT/mutations.csv).
 # Not part of CI (a few minutes per mutation on 2 cores).
 # Tests run per mutation (a documented subset of scripts/test.sh, in this order, stopping at
-# the first failure): the test executables in $TESTS below — the unit tests of the fluid and
-# the contact, the set-up warnings, the golden values, then the verification tests of the
+# the first failure): the test executables in $TESTS below — the slamming report and the
+# absorbing zone, the unit tests of the fluid and the contact, the set-up warnings, the golden values, then the verification tests of the
 # contact and the slamming (still water last: it is the slowest). Only these and slamsph are
 # rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
@@ -17,7 +17,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_cylinder_entry test_app_coupling test_app_still_water"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_cylinder_entry test_app_coupling test_app_still_water"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -60,6 +60,19 @@ M = [
   "const double dp_static = -0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);"),
  ("fluid j-side continuity doubled", "src/fluid/gsph_fluid_rates.cpp",
   "drho[j] -= Vi * (us - uR) * dwr_r;", "drho[j] -= 2.0 * Vi * (us - uR) * dwr_r;"),
+ ("contact static-term switch ignored", "src/coupling/contact_rates.cpp",
+  "const Vec2 g_rel = prm.hydrostatic_correction ? prm.gravity - c.a[s] : Vec2{};",
+  "const Vec2 g_rel = prm.gravity - c.a[s];"),
+ ("reported contact pressure not limited at p_cav", "src/app/probes.cpp",
+  "std::max(sys.contact.p[s], p_cav)", "std::max(sys.contact.p[s], -1e300 + 0.0 * p_cav)"),
+ ("absorbing zone does nothing", "src/fluid/absorbing_zone.cpp",
+  "  if (!z.active()) return;", "  return;"),
+ ("absorbing zone damps the velocity only", "src/fluid/absorbing_zone.cpp",
+  "f.rho[i] = rho_h + decay * (f.rho[i] - rho_h);", "(void)rho_h;"),
+ ("entry report: Cs with the contact speed, not V(t)", "src/io/entry_series.cpp",
+  "force[k] / (density * vk * vk * radius)", "force[k] / (density * s.speed_at_contact * s.speed_at_contact * radius)"),
+ ("entry report: t0 = start of the run", "src/io/entry_series.cpp",
+  "    s.t.push_back(tk - s.t0);", "    s.t.push_back(tk - t_body.front());"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))
