@@ -19,13 +19,30 @@ std::string body_key(const CaseConfig& cfg, std::size_t index, const char* key) 
 
 SolidBody build_body(const CaseConfig& cfg, std::size_t index) {
   const BodyConfig& bc = cfg.bodies[index];
-  const BodySetup setup = body_setup_from_case(cfg, index);
+  BodySetup setup = body_setup_from_case(cfg, index);
   SolidBody body;
   body.name = bc.name;
   body.kind = setup.kind;
   body.scheme = setup.scheme;
   body.dx = setup.dx;
-  const ParticleLattice lat = build_shape(bc.shape, body.dx);
+  ParticleLattice lat;
+  try {
+    lat = build_shape(bc.shape, body.dx);
+  } catch (const FuselageShapeError& e) {
+    throw InputError(cfg.where("body[" + std::to_string(index) + "].shape." + e.key) + ": " +
+                     e.what());
+  }
+  // Shapes made of parts with their own spacings (a fuselage): the body's dx, kernel and
+  // stable step are those of the finest part.
+  double finest = 0.0;
+  for (double d : lat.spacing)
+    if (d > 0.0 && (finest == 0.0 || d < finest)) finest = d;
+  if (finest > 0.0) setup.dx = body.dx = finest;
+  body.spacing = lat.spacing;
+  for (double& d : body.spacing)
+    if (d == 0.0) d = body.dx;
+  body.part = lat.part;
+  if (bc.shape.type == "fuselage") body.part_names = fuselage_part_names();
   const MaterialConfig* mat = cfg.find_material(bc.material);
   const double rho = bc.density > 0.0 ? bc.density : (mat ? mat->density : cfg.fluid.density);
   body.X = lat.x;

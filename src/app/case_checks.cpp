@@ -23,7 +23,7 @@ std::string num(double v) {
 double shape_area(const ShapeConfig& s, double dx) {
   if (s.type == "rectangle") return (s.box.max.x - s.box.min.x) * (s.box.max.y - s.box.min.y);
   if (s.type == "disc") return std::numbers::pi * s.radius * s.radius;
-  if (s.type == "ring")
+  if (s.type == "ring" || s.type == "fuselage")  // fuselage: its skin
     return std::numbers::pi * (s.outer_radius * s.outer_radius - s.inner_radius * s.inner_radius);
   if (s.type == "polygon") {
     double a = 0.0;
@@ -65,6 +65,18 @@ double estimate_particles(const CaseConfig& cfg) {
   for (const FluidBlockConfig& b : cfg.fluid.blocks)
     n += (b.box.max.x - b.box.min.x) * (b.box.max.y - b.box.min.y) / (dx * dx);
   for (const BodyConfig& b : cfg.bodies) {
+    if (b.shape.type == "fuselage") {  // parts with their own spacings
+      const FuselageShape& f = b.shape.fuselage;
+      const double ds = f.skin_spacing(), df = f.floor_spacing();
+      const double r_in = 0.5 * f.diameter - f.skin_thickness;
+      n += shape_area(b.shape, ds) / (ds * ds);
+      const FuselageStringers& g = f.stringers;
+      n += g.count * (g.height * g.web_thickness + 2.0 * g.flange_width * g.flange_thickness) /
+           (ds * ds);
+      if (f.floor.present) n += 2.0 * r_in * f.floor.thickness / (df * df);
+      n += static_cast<double>(f.columns.x.size()) * r_in * f.columns.width / (df * df);
+      continue;
+    }
     const double d = body_dx(cfg, b);
     n += shape_area(b.shape, d) / (d * d);
   }

@@ -2,6 +2,7 @@
 #pragma once
 #include "geometry/box_lattice.h"
 #include "geometry/build_shape.h"
+#include "geometry/fuselage_section.h"
 #include "geometry/particle_lattice.h"
 #include "geometry/polar_lattice.h"
 #include "geometry/polygon_lattice.h"

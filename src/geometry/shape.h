@@ -7,13 +7,14 @@
 
 #include "core/box.h"
 #include "core/vec.h"
+#include "geometry/fuselage_shape.h"
 
 namespace slamsph {
 
 struct ShapeConfig {
   // "rectangle" (box), "disc" (centre, radius), "ring" (centre, inner/outer radius,
   // layers through the thickness), "polygon" (vertices), "tank" (inner box, wall layers,
-  // open top).
+  // open top), "fuselage" (centre and `fuselage`: skin, stringers, floor, columns).
   std::string type;
   Box box;
   Vec2 centre;
@@ -23,6 +24,7 @@ struct ShapeConfig {
   int layers = 0;  // ring: layers through the thickness; tank: wall layers (default 4)
   std::vector<Vec2> vertices;
   bool open_top = true;  // tank
+  FuselageShape fuselage;
 };
 
 }  // namespace slamsph

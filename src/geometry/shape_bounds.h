@@ -24,6 +24,10 @@ inline int ring_thickness_layers(const ShapeConfig& s, double dx) {
 // Unknown types give an empty box at the origin.
 inline Box shape_bounds(const ShapeConfig& s, double dx) {
   if (s.type == "rectangle") return s.box;
+  if (s.type == "fuselage") {
+    const double r = 0.5 * s.fuselage.diameter;
+    return {s.centre - Vec2{r, r}, s.centre + Vec2{r, r}};
+  }
   if (s.type == "disc" || s.type == "ring") {
     const double r = s.type == "disc" ? s.radius : s.outer_radius;
     return {s.centre - Vec2{r, r}, s.centre + Vec2{r, r}};

@@ -38,7 +38,9 @@ std::vector<std::string> names_of(const Table& table) {
 }
 const std::vector<std::string> kKinds = names_of(kBodyKindNames);
 const std::vector<std::string> kSchemes = names_of(kSolidSchemeNames);
-const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank"};
+const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank",
+                                       "fuselage"};
+const std::vector<std::string> kSections{"I", "L"};
 const std::vector<std::string> kProbeKinds{
     "pressure",          "surge_front", "water_height",      "max_speed",       "body_pressure",
     "body_displacement", "body_strain", "body_stress",       "body_max_strain", "keel_deflection",
@@ -395,14 +397,87 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
   return out;
 }
 
+// [body.shape] type = "fuselage" with [skin], [stringers], [floor], [columns] sub-tables
+// (geometry/fuselage_shape.h). Values are checked here; how the parts fit together (a
+// stringer crossing the floor, columns off the floor's lattice) is checked by the builder,
+// whose errors name the same keys (app/case_builder.cpp).
+void parse_fuselage(const Reader& r, const std::string& kind, double dx, ShapeConfig& s) {
+  r.allow({"type", "centre", "diameter", "skin", "stringers", "floor", "columns"},
+          "for shape type 'fuselage'");
+  if (kind != "elastic" && kind != "rigid_free" && kind != "rigid_prescribed")
+    r.bad("type", "a fuselage is a moving body", "kind = 'elastic' (or a rigid moving kind)",
+          "kind '" + kind + "'");
+  FuselageShape& f = s.fuselage;
+  s.centre = vec(r, "centre", "coordinates in m");
+  f.diameter = num(r, "diameter", positive("the outer skin diameter in m"));
+  s.outer_radius = 0.5 * f.diameter;
+  auto sk = r.table("skin", "a [body.shape.skin] table with thickness and layers");
+  if (!sk) r.missing("skin", "a [body.shape.skin] table with thickness (and layers)");
+  sk->allow({"thickness", "layers"});
+  f.skin_thickness = num(*sk, "thickness", positive("a positive skin thickness in m"));
+  sk->check(f.skin_thickness < 0.25 * f.diameter, "thickness", "must be < diameter/4",
+            "a thin skin in m", f.skin_thickness);
+  const std::string le = "a whole number of layers in [2, 1000]";
+  const auto l = sk->integer("layers", le);
+  if (l && (*l < 2 || *l > 1000)) sk->bad("layers", "must be in [2, 1000]", le, std::to_string(*l));
+  f.skin_layers = l ? static_cast<int>(*l)
+                    : std::max(2, static_cast<int>(std::lround(f.skin_thickness / dx)));
+  s.inner_radius = s.outer_radius - f.skin_thickness;
+  s.layers = f.skin_layers;
+  if (auto st = r.table("stringers", "a [body.shape.stringers] table")) {
+    st->allow({"count", "section", "height", "web_thickness", "flange_width", "flange_thickness",
+               "offset_deg"});
+    FuselageStringers& g = f.stringers;
+    const std::string ce = "a whole number of stringers in [1, 1000]";
+    const auto c = st->integer("count", ce);
+    if (!c) st->missing("count", ce);
+    if (*c < 1 || *c > 1000) st->bad("count", "must be in [1, 1000]", ce, std::to_string(*c));
+    g.count = static_cast<int>(*c);
+    g.section = st->choice("section", kSections).value_or("");
+    if (g.section.empty()) st->missing("section", "\"I\" or \"L\"");
+    g.height = num(*st, "height", positive("the height from the inner skin face in m"));
+    g.web_thickness = num(*st, "web_thickness", positive("a positive web thickness in m"));
+    g.flange_width = num(*st, "flange_width", positive("a positive flange width in m"));
+    g.flange_thickness =
+        num(*st, "flange_thickness", positive("a positive flange thickness in m"));
+    g.offset_deg = num(*st, "offset_deg", any("an angle in degrees from +x, CCW"), 0.0);
+    st->check(g.height < 0.5 * s.inner_radius, "height", "must be < inner radius / 2",
+              "a stringer height in m", g.height);
+  }
+  if (auto fl = r.table("floor", "a [body.shape.floor] table")) {
+    fl->allow({"height", "thickness", "dx"});
+    FuselageFloor& g = f.floor;
+    g.present = true;
+    g.height = num(*fl, "height", any("the floor mid-plane's y relative to the centre in m"));
+    g.thickness = num(*fl, "thickness", positive("a positive floor thickness in m"));
+    g.dx = num(*fl, "dx", positive("a positive particle spacing in m"), f.skin_spacing());
+    fl->check(std::abs(g.height) + 0.5 * g.thickness < s.inner_radius, "height",
+              "the floor must lie inside the skin (|height| + thickness/2 < inner radius " +
+                  pretty(s.inner_radius) + " m)",
+              "a floor height in m inside the skin", g.height);
+  }
+  if (auto co = r.table("columns", "a [body.shape.columns] table")) {
+    co->allow({"x", "width"});
+    if (!f.floor.present)
+      co->bad("x", "columns stand on the floor", "a [body.shape.floor] table as well");
+    const std::string xe = "an array of column centre x positions relative to the centre in m";
+    const auto xs = co->num_list("x", xe);
+    if (!xs) co->missing("x", xe);
+    if (xs->empty()) co->bad("x", "empty list", xe);
+    f.columns.x = *xs;
+    f.columns.width = num(*co, "width", positive("a positive column width in m"));
+  }
+}
+
 ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) {
   auto r = body.table("shape", "a [body.shape] table with type and its keys");
   if (!r)
     body.missing("shape", "a [body.shape] table (type = " +
-                              std::string("rectangle, disc, ring, polygon or tank)"));
+                              std::string("rectangle, disc, ring, polygon, tank or fuselage)"));
   ShapeConfig s;
   s.type = r->choice("type", kShapes).value_or("");
-  if (s.type.empty()) r->missing("type", "one of 'rectangle', 'disc', 'ring', 'polygon', 'tank'");
+  if (s.type.empty())
+    r->missing("type", "one of 'rectangle', 'disc', 'ring', 'polygon', 'tank', 'fuselage'");
   const std::string ctx = "for shape type '" + s.type + "'";
   if (s.type == "rectangle") {
     r->allow({"type", "min", "max"}, ctx);
@@ -447,6 +522,8 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) 
                  "polygon edges " + std::to_string(i) + " and " + std::to_string(j) + " intersect",
                  "a simple (non-self-intersecting) polygon");
       }
+  } else if (s.type == "fuselage") {
+    parse_fuselage(*r, kind, dx, s);
   } else {  // tank
     r->allow({"type", "min", "max", "layers", "open_top"}, ctx);
     if (kind == "elastic" || kind == "rigid_free")

@@ -205,6 +205,39 @@ std::string resolved_case_toml(const CaseConfig& c) {
       for (std::size_t i = 0; i < s.vertices.size(); ++i) o << (i ? ", " : "") << v2(s.vertices[i]);
       o << "]  # [m]\n";
     }
+    if (s.type == "fuselage") {
+      const FuselageShape& f = s.fuselage;
+      o << "centre = " << v2(s.centre) << "  # [m]\n";
+      o << "diameter = " << d(f.diameter) << "  # [m]\n";
+      o << "\n[body.shape.skin]\n";
+      o << "thickness = " << d(f.skin_thickness) << "  # [m]\n";
+      o << "layers = " << f.skin_layers << "\n";
+      if (f.stringers.count > 0) {
+        const FuselageStringers& g = f.stringers;
+        o << "\n[body.shape.stringers]\n";
+        o << "count = " << g.count << "\n";
+        o << "section = " << q(g.section) << "\n";
+        o << "height = " << d(g.height) << "  # [m]\n";
+        o << "web_thickness = " << d(g.web_thickness) << "  # [m]\n";
+        o << "flange_width = " << d(g.flange_width) << "  # [m]\n";
+        o << "flange_thickness = " << d(g.flange_thickness) << "  # [m]\n";
+        o << "offset_deg = " << d(g.offset_deg) << "  # [deg]\n";
+      }
+      if (f.floor.present) {
+        o << "\n[body.shape.floor]\n";
+        o << "height = " << d(f.floor.height) << "  # [m]\n";
+        o << "thickness = " << d(f.floor.thickness) << "  # [m]\n";
+        o << "dx = " << d(f.floor_spacing()) << "  # [m]\n";
+      }
+      if (!f.columns.x.empty()) {
+        o << "\n[body.shape.columns]\n";
+        o << "x = [";
+        for (std::size_t i = 0; i < f.columns.x.size(); ++i)
+          o << (i ? ", " : "") << d(f.columns.x[i]);
+        o << "]  # [m]\n";
+        o << "width = " << d(f.columns.width) << "  # [m]\n";
+      }
+    }
     if (bd.kind == "elastic" && (!bd.clamp.boxes.empty() || !bd.clamp.layers.empty())) {
       o << "\n[body.clamp]\n";
       const auto box_text = [&](const Box& bx) {

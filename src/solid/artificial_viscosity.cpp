@@ -17,7 +17,6 @@ double monaghan_pi(Vec2 vij, Vec2 xij, double h, double rho0_mean, double c, dou
 void compute_artificial_viscosity(const SolidBody& body, const SolidTopology& topo,
                                   std::span<const Vec2> v, const Executor& exec, std::span<Vec2> f,
                                   std::span<double> q) {
-  const double h = body.kernel.h();
   const SolidMaterial& mat = body.material;
   const bool off = mat.av_alpha == 0.0 && mat.av_beta == 0.0;
   exec.for_each(body.size(), [&](std::size_t i) {
@@ -28,6 +27,8 @@ void compute_artificial_viscosity(const SolidBody& body, const SolidTopology& to
         const std::uint32_t j = topo.pairs.index[k];
         const Vec2 xij = body.x[i] - body.x[j];
         const Vec2 vij = v[i] - v[j];
+        // Symmetric pair smoothing length (solid_topology.h): body h for one spacing.
+        const double h = 0.5 * (topo.h[i] + topo.h[j]);
         const double pi = monaghan_pi(vij, xij, h, 0.5 * (body.rho0[i] + body.rho0[j]),
                                       mat.sound_speed, mat.av_alpha, mat.av_beta);
         if (pi == 0.0) continue;

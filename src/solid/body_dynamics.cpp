@@ -146,6 +146,15 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   body.a.assign(n, Vec2{});
   body.f_fluid.assign(n, Vec2{});
   if (body.layer.size() != n) body.layer.assign(n, -1);
+  if (body.part.size() != n) body.part.assign(n, 0);
+  if (body.spacing.size() != n) body.spacing.assign(n, body.dx);
+  if (body.part_names.empty()) body.part_names = {"body"};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (body.part[i] >= body.part_names.size())
+      throw InputError("body '" + cfg.name + "': particle part id without a part name");
+    if (!(body.spacing[i] >= body.dx))
+      throw InputError("body '" + cfg.name + "': dx must be the finest particle spacing");
+  }
   body.dissipated = body.hourglass_work = body.external_work = 0.0;
   body.last_substeps = 0;
 
@@ -240,8 +249,10 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
 
   const Executor serial(1);
   try {
+    // The parts of one body are bonded (a fuselage's skin, stringers, floor, columns).
     body.topology = build_solid_topology(
-        body.X, body.V0, TopologySpec{body.scheme, body.dx, body.kernel, {}, false}, serial);
+        body.X, body.V0,
+        TopologySpec{body.scheme, body.dx, body.kernel, body.part, true, body.spacing}, serial);
   } catch (const std::invalid_argument& e) {
     throw InputError("body '" + cfg.name + "': " + e.what());
   }
@@ -265,7 +276,12 @@ double stable_time_step(const SolidBody& body) {
   // The hourglass penalty (stiffness ~ α E per pair) raises the fastest wave speed to at most
   // c_s sqrt(1 + α); without this factor α = 10 is unstable on the plate.
   const double c = body.material.sound_speed * std::sqrt(1.0 + body.material.hourglass);
-  return body.cfl * body.kernel.h() / (c + vmax);
+  // Irregular joints between parts (solid_topology.h) have gradient weights above the
+  // regular lattice's 1/dx: the step shrinks by that ratio (1 for one-part lattices, which
+  // measure max |g| dx <= 1; the fuselage joints 1.1-1.3). Without it a 2-layer skin with a
+  // floor diverges within 100 sub-steps (tests/unit/test_app_fuselage.cpp).
+  const double stiff = std::max(1.0, body.topology.max_gradient * body.dx);
+  return body.cfl * body.kernel.h() / (stiff * (c + vmax));
 }
 
 void advance_body(SolidBody& body, double t, double dt, Vec2 gravity, const Executor& exec) {

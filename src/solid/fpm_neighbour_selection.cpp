@@ -54,12 +54,23 @@ std::vector<std::uint32_t> choose(Vec2 Xi, std::span<const Vec2> X, double dx,
 
 void select_fpm_sets(std::span<const Vec2> X, double dx, const Executor& exec,
                      NeighbourList& sets) {
+  const std::vector<double> spacing(X.size(), dx);
+  select_fpm_sets(X, spacing, exec, sets);
+}
+
+void select_fpm_sets(std::span<const Vec2> X, std::span<const double> spacing,
+                     const Executor& exec, NeighbourList& sets) {
   const std::size_t n = X.size();
-  const double radius = kCandidateRadius * dx;
+  if (spacing.size() != n)
+    throw std::invalid_argument("select_fpm_sets: one spacing per particle expected");
+  double dmax = 0.0;
+  for (double d : spacing) dmax = std::max(dmax, d);
   CellGrid grid;
-  grid.build(X, radius);
+  grid.build(X, kCandidateRadius * dmax);
   std::vector<std::vector<std::uint32_t>> chosen(n);
   exec.for_each(n, [&](std::size_t i) {
+    const double dx = spacing[i];
+    const double radius = kCandidateRadius * dx;
     std::vector<std::pair<double, std::uint32_t>> cand;
     grid.for_each_candidate(X[i], [&](std::uint32_t j) {
       if (j == i) return;

@@ -9,11 +9,13 @@ namespace {
 
 // Forced inline: in the pair loops below GCC otherwise keeps a call per pair (measured with
 // callgrind: +10 % instructions on the oscillating plate).
-[[gnu::always_inline]] inline double pair_stiffness(const SolidBody& body, double alpha,
-                                                    std::size_t i, std::size_t j) {
+// κ_ij with the pair's reference kernel value (solid_topology.h: symmetric h_ij, so parts
+// of different spacing get a symmetric stiffness).
+[[gnu::always_inline]] inline double pair_stiffness(const SolidBody& body, const SolidTopology& topo,
+                                                    double alpha, std::size_t i, std::size_t j,
+                                                    std::uint32_t k) {
   const double r = norm(body.X[j] - body.X[i]);
-  return alpha * body.material.youngs_modulus * body.V0[i] * body.V0[j] * body.kernel.w(r) /
-         (r * r);
+  return alpha * body.material.youngs_modulus * body.V0[i] * body.V0[j] * topo.w0[k] / (r * r);
 }
 
 [[gnu::always_inline]] inline Vec2 pair_error(const SolidBody& body, std::size_t i, std::size_t j) {
@@ -30,7 +32,7 @@ double hourglass_energy(const SolidBody& body, const SolidTopology& topo, double
     double s = 0.0;
     for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
       const std::uint32_t j = topo.pairs.index[k];
-      s += 0.5 * pair_stiffness(body, alpha, i, j) * norm2(pair_error(body, i, j));
+      s += 0.5 * pair_stiffness(body, topo, alpha, i, j, k) * norm2(pair_error(body, i, j));
     }
     per[i] = s;
   });
@@ -53,7 +55,7 @@ void compute_hourglass_forces(const SolidBody& body, const SolidTopology& topo, 
     Mat2 g;
     for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
       const std::uint32_t j = topo.pairs.index[k];
-      keps[k] = pair_stiffness(body, alpha, i, j) * pair_error(body, i, j);
+      keps[k] = pair_stiffness(body, topo, alpha, i, j, k) * pair_error(body, i, j);
       g += outer(keps[k], body.X[j] - body.X[i]);
     }
     G[i] = g;

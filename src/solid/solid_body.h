@@ -55,7 +55,7 @@ struct SolidBody {
   std::string name;
   BodyKind kind = BodyKind::RigidFixed;
   SolidScheme scheme = SolidScheme::TlSfpm;
-  double dx = 0.0;  // particle spacing [m]
+  double dx = 0.0;  // particle spacing [m]; the finest one for a body of parts
   Kernel kernel;    // body's own kernel (h = h_over_dx * dx)
   bool feels_gravity = true;
 
@@ -70,6 +70,9 @@ struct SolidBody {
   std::vector<Vec2> f_fluid;          // fluid force on the particle, held over sub-steps [N/m]
   std::vector<std::uint8_t> clamped;  // 1 = held fixed
   std::vector<int> layer;             // ring layer through the thickness (-1 if none)
+  std::vector<std::uint32_t> part;    // part id (index into part_names; 0 for one-part bodies)
+  std::vector<double> spacing;        // the particle's own spacing (parts may differ) [m]
+  std::vector<std::string> part_names;  // name per part id (a fuselage: skin, stringers, ...)
 
   RigidState rigid;                        // used by rigid kinds
   std::vector<PrescribedVelocity> motion;  // rigid_prescribed velocity table
@@ -121,6 +124,8 @@ struct SolidBody {
     f(FieldSpec{"reference_density", "kg/m^3", false, false}, s.rho0);
     f(FieldSpec{"clamped", "-", false, false}, s.clamped);
     f(FieldSpec{"layer", "-", false, false}, s.layer);
+    f(FieldSpec{"part", "-", false, true}, s.part);
+    f(FieldSpec{"spacing", "m", false, false}, s.spacing);
     // The material law's history fields, under the names the law declares
     // (solid/materials/material_law.h), written to VTK if the law marks them for output.
     for (std::size_t k = 0; k < s.history.fields.size(); ++k)

@@ -25,21 +25,41 @@ void reverse_of_symmetric(const NeighbourList& pairs, std::vector<std::uint32_t>
     }
 }
 
+// h per particle and w0 per pair (symmetric smoothing length, see the header). Particles
+// at the body's spacing use the body's kernel itself, so one-spacing bodies are unchanged.
+void pair_lengths(std::span<const Vec2> X, std::span<const double> spacing,
+                  const TopologySpec& spec, const Executor& exec, SolidTopology& t) {
+  const std::size_t n = X.size();
+  const double hb = spec.kernel.h();
+  t.h.resize(n);
+  for (std::size_t i = 0; i < n; ++i) t.h[i] = spacing[i] == spec.dx ? hb : hb * spacing[i] / spec.dx;
+  t.w0.resize(t.pairs.index.size());
+  exec.for_each(n, [&](std::size_t i) {
+    for (std::uint32_t k = t.pairs.start[i]; k < t.pairs.start[i + 1]; ++k) {
+      const std::uint32_t j = t.pairs.index[k];
+      const double r = norm(X[j] - X[i]);
+      const double hij = 0.5 * (t.h[i] + t.h[j]);
+      t.w0[k] = hij == hb ? spec.kernel.w(r) : Kernel(spec.kernel.type(), hij).w(r);
+    }
+  });
+}
+
 // The operators of one group of particles that may all pair with each other (indices
 // local to X).
 SolidTopology build_group(std::span<const Vec2> X, std::span<const double> V0,
-                          const TopologySpec& spec, const Executor& exec) {
+                          std::span<const double> spacing, const TopologySpec& spec,
+                          const Executor& exec) {
   SolidTopology t;
   const std::size_t n = X.size();
   std::vector<std::uint8_t> use;
   std::vector<Vec2> raw;
   if (spec.scheme == SolidScheme::TlSfpm) {
-    select_fpm_sets(X, spec.dx, exec, t.fpm_sets);
+    select_fpm_sets(X, spacing, exec, t.fpm_sets);
     symmetric_union(t.fpm_sets, t.pairs, t.pair_reverse, use);
     raw.resize(t.pairs.index.size());
     exec.for_each(n, [&](std::size_t i) {
       for (std::uint32_t k = t.pairs.start[i]; k < t.pairs.start[i + 1]; ++k)
-        raw[k] = fpm_reference_gradient(X[i], X[t.pairs.index[k]], spec.dx);
+        raw[k] = fpm_reference_gradient(X[i], X[t.pairs.index[k]], spacing[i]);
     });
   } else {
     CellGrid grid;
@@ -62,6 +82,7 @@ SolidTopology build_group(std::span<const Vec2> X, std::span<const double> V0,
     for (std::uint32_t k = t.pairs.start[i]; k < t.pairs.start[i + 1]; ++k)
       if (use[k]) t.grad0[k] = V0[t.pairs.index[k]] * (t.B[i] * raw[k]);
   });
+  pair_lengths(X, spacing, spec, exec, t);
   return t;
 }
 
@@ -94,6 +115,16 @@ SolidTopology build_solid_topology(std::span<const Vec2> X, std::span<const doub
   if (!spec.part.empty() && spec.part.size() != n)
     throw std::invalid_argument("build_solid_topology: one part id per particle expected");
   auto part_of = [&](std::size_t i) { return spec.part.empty() ? 0u : spec.part[i]; };
+  if (!spec.spacing.empty() && spec.spacing.size() != n)
+    throw std::invalid_argument("build_solid_topology: one spacing per particle expected");
+  const std::vector<double> spacing =
+      spec.spacing.empty() ? std::vector<double>(n, spec.dx) : spec.spacing;
+  if (spec.scheme == SolidScheme::TlSph)
+    for (double d : spacing)
+      if (d != spec.dx)
+        throw std::invalid_argument(
+            "build_solid_topology: the tlsph scheme needs one spacing per body (parts of "
+            "different spacing need scheme = 'tl_sfpm')");
 
   // Groups of particles that may pair: the active particles, split by part unless bonded.
   std::map<std::uint32_t, std::vector<std::uint32_t>> groups;  // ordered: deterministic
@@ -105,9 +136,10 @@ SolidTopology build_solid_topology(std::span<const Vec2> X, std::span<const doub
 
   if (groups.size() == 1 && groups.begin()->second.size() == n) {
     // Every particle in one group: no index mapping (the common case of one-part bodies).
-    SolidTopology t = build_group(X, V0, spec, exec);
+    SolidTopology t = build_group(X, V0, spacing, spec, exec);
     t.part.resize(n);
     for (std::size_t i = 0; i < n; ++i) t.part[i] = part_of(i);
+    for (const Vec2& g : t.grad0) t.max_gradient = std::max(t.max_gradient, norm(g));
     return t;
   }
 
@@ -119,14 +151,15 @@ SolidTopology build_solid_topology(std::span<const Vec2> X, std::span<const doub
     std::sort(members.begin(), members.end());  // the local order follows the global one
     members.erase(std::unique(members.begin(), members.end()), members.end());
     std::vector<Vec2> Xg;
-    std::vector<double> Vg;
+    std::vector<double> Vg, Dg;
     for (std::size_t li = 0; li < members.size(); ++li) {
       owner[members[li]] = static_cast<int>(built.size());
       local[members[li]] = static_cast<std::uint32_t>(li);
       Xg.push_back(X[members[li]]);
       Vg.push_back(V0[members[li]]);
+      Dg.push_back(spacing[members[li]]);
     }
-    built.push_back(build_group(Xg, Vg, spec, exec));
+    built.push_back(build_group(Xg, Vg, Dg, spec, exec));
     global.push_back(members);
   }
 
@@ -140,10 +173,13 @@ SolidTopology build_solid_topology(std::span<const Vec2> X, std::span<const doub
   if (spec.scheme == SolidScheme::TlSfpm) merge_lists(set_lists, global, owner, local, t.fpm_sets);
   t.pair_reverse.assign(t.pairs.index.size(), 0);
   t.grad0.assign(t.pairs.index.size(), Vec2{});
+  t.w0.assign(t.pairs.index.size(), 0.0);
   t.B.assign(n, Mat2{});
   t.part.resize(n);
+  t.h.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     t.part[i] = part_of(i);
+    t.h[i] = spacing[i] == spec.dx ? spec.kernel.h() : spec.kernel.h() * spacing[i] / spec.dx;
     if (owner[i] < 0) continue;
     const SolidTopology& g = built[owner[i]];
     const std::uint32_t li = local[i];
@@ -151,12 +187,14 @@ SolidTopology build_solid_topology(std::span<const Vec2> X, std::span<const doub
     for (std::uint32_t lk = g.pairs.start[li], k = t.pairs.start[i]; lk < g.pairs.start[li + 1];
          ++lk, ++k) {
       t.grad0[k] = g.grad0[lk];
+      t.w0[k] = g.w0[lk];
       // (j, i) sits at the same offset within j's list in the group and in the merge.
       const std::uint32_t lr = g.pair_reverse[lk];
       const std::uint32_t lj = g.pairs.index[lk];
       t.pair_reverse[k] = t.pairs.start[global[owner[i]][lj]] + (lr - g.pairs.start[lj]);
     }
   }
+  for (const Vec2& g : t.grad0) t.max_gradient = std::max(t.max_gradient, norm(g));
   return t;
 }
 

@@ -20,10 +20,21 @@
 //
 // Parts: every particle carries a part id. Pairs join particles of the same part only,
 // unless the parts are bonded (`bond_parts`), when pairs may join any two particles of the
-// body — the structure a body assembled from several bonded parts needs. (Bonding parts of
-// different particle spacing needs a pair rule across spacings; not implemented: one dx
-// per body.) Subsets: only `active` particles get pairs; the others have empty lists,
-// B = 0 and take no part (e.g. to rebuild after particles were removed).
+// body — the structure a body assembled from several bonded parts needs. Subsets: only
+// `active` particles get pairs; the others have empty lists, B = 0 and take no part (e.g.
+// to rebuild after particles were removed).
+//
+// Spacings: a particle may have its own spacing d_i (a fine skin bonded to a coarser
+// floor; TL-SFPM only). Particle i selects S_i with d_i (solid/fpm_neighbour_selection.h);
+// the gradient stays exact for linear fields on any non-degenerate set, so F is exact for
+// every affine motion across the joint. Pair quantities that need a length use the
+// symmetric smoothing length h_ij = (h_i + h_j)/2, h_i = h_b d_i/dx: `w0[k]` = W_{h_ij}(|X_ij|)
+// (hourglass stiffness) and `h` per particle (artificial viscosity). With one spacing h_i
+// is the body's h and w0 its kernel value, bit for bit.
+//
+// `max_gradient` = max |g_ij|. On a regular lattice of spacing d it is 1/d (a one-sided
+// boundary difference, Eq. 7) or less; an irregular joint between parts has larger weights
+// (a stiffer pair), which the solid stable step accounts for (solid/body_dynamics.h).
 #pragma once
 #include <cstdint>
 #include <span>
@@ -45,6 +56,9 @@ struct SolidTopology {
   std::vector<Mat2> B;      // correction matrix (Eq. 11; TL-SFPM: the FPM M_i⁻¹) [m^-2 m^2]
   std::vector<Vec2> grad0;  // g_ij = V0_j B_i ∇0W_ij per pair (0 if j not in S_i) [1/m]
   std::vector<std::uint32_t> part;  // part id per particle
+  std::vector<double> w0;  // W_{h_ij}(|X_j − X_i|) per pair, symmetric [1/m^2]
+  std::vector<double> h;   // smoothing length per particle [m]
+  double max_gradient = 0.0;  // max |g_ij| over all pairs [1/m] (solid stable step)
 
   std::size_t size() const { return pairs.size(); }
 };
@@ -55,6 +69,7 @@ struct TopologySpec {
   Kernel kernel;                    // TLSPH support and gradient
   std::vector<std::uint32_t> part;  // part id per particle (empty: one part, id 0)
   bool bond_parts = false;          // pairs may join different parts
+  std::vector<double> spacing;      // spacing per particle (empty: dx for all) [m]
 };
 
 // Builds the topology of the particles `active` (all if empty) of a body with reference
