@@ -401,7 +401,8 @@ std::vector<MaterialConfig> parse_materials(const Reader& root,
 // (geometry/fuselage_shape.h). Values are checked here; how the parts fit together (a
 // stringer crossing the floor, columns off the floor's lattice) is checked by the builder,
 // whose errors name the same keys (app/case_builder.cpp).
-void parse_fuselage(const Reader& r, const std::string& kind, double dx, ShapeConfig& s) {
+void parse_fuselage(const Reader& r, const std::string& kind, double dx, const CaseConfig& c,
+                    ShapeConfig& s) {
   r.allow({"type", "centre", "diameter", "skin", "stringers", "floor", "columns"},
           "for shape type 'fuselage'");
   if (kind != "elastic" && kind != "rigid_free" && kind != "rigid_prescribed")
@@ -424,6 +425,18 @@ void parse_fuselage(const Reader& r, const std::string& kind, double dx, ShapeCo
                     : std::max(2, static_cast<int>(std::lround(f.skin_thickness / dx)));
   s.inner_radius = s.outer_radius - f.skin_thickness;
   s.layers = f.skin_layers;
+  // The body's spacing is the skin's (its finest part); it must be a supported ratio to the
+  // water's like any body dx (docs/model.md §4).
+  if (!c.fluid.blocks.empty()) {
+    const double ratio = c.numerics.dx / f.skin_spacing();
+    if (!(ratio >= 1.0 - 1e-9 && ratio <= kMaxSpacingRatio * (1.0 + 1e-9)))
+      sk->bad("layers",
+              "skin spacing thickness/layers = " + pretty(f.skin_spacing()) +
+                  " m gives numerics.dx / spacing = " + pretty(ratio) + " outside [1, " +
+                  pretty(kMaxSpacingRatio) + "]",
+              "a water spacing 1-" + pretty(kMaxSpacingRatio) + "x the skin spacing",
+              std::to_string(f.skin_layers));
+  }
   if (auto st = r.table("stringers", "a [body.shape.stringers] table")) {
     st->allow({"count", "section", "height", "web_thickness", "flange_width", "flange_thickness",
                "offset_deg"});
@@ -469,7 +482,8 @@ void parse_fuselage(const Reader& r, const std::string& kind, double dx, ShapeCo
   }
 }
 
-ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) {
+ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx,
+                        const CaseConfig& c) {
   auto r = body.table("shape", "a [body.shape] table with type and its keys");
   if (!r)
     body.missing("shape", "a [body.shape] table (type = " +
@@ -523,7 +537,7 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx) 
                  "a simple (non-self-intersecting) polygon");
       }
   } else if (s.type == "fuselage") {
-    parse_fuselage(*r, kind, dx, s);
+    parse_fuselage(*r, kind, dx, c, s);
   } else {  // tank
     r->allow({"type", "min", "max", "layers", "open_top"}, ctx);
     if (kind == "elastic" || kind == "rigid_free")
@@ -636,7 +650,8 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
     b.scheme = "tl_sfpm";
   }
 
-  b.shape = parse_shape(r, b.kind, b.dx);
+  b.shape = parse_shape(r, b.kind, b.dx, c);
+  if (b.shape.type == "fuselage") b.dx = b.shape.fuselage.skin_spacing();  // its finest part
 
   if (b.initial_profile == "cantilever_mode") {
     b.mode_vf = num(r, "mode_vf", any("the mode's free-end velocity amplitude in m/s"));

@@ -105,6 +105,23 @@ void expect_equal(const CaseConfig& a, const CaseConfig& b) {
     EXPECT_EQ(s.open_top, t.open_top);
     ASSERT_EQ(s.vertices.size(), t.vertices.size());
     for (std::size_t k = 0; k < s.vertices.size(); ++k) EXPECT_SAME(s.vertices[k], t.vertices[k]);
+    const FuselageShape &f = s.fuselage, &g = t.fuselage;
+    EXPECT_SAME(f.diameter, g.diameter);
+    EXPECT_SAME(f.skin_thickness, g.skin_thickness);
+    EXPECT_EQ(f.skin_layers, g.skin_layers);
+    EXPECT_EQ(f.stringers.count, g.stringers.count);
+    EXPECT_EQ(f.stringers.section, g.stringers.section);
+    EXPECT_SAME(f.stringers.height, g.stringers.height);
+    EXPECT_SAME(f.stringers.web_thickness, g.stringers.web_thickness);
+    EXPECT_SAME(f.stringers.flange_width, g.stringers.flange_width);
+    EXPECT_SAME(f.stringers.flange_thickness, g.stringers.flange_thickness);
+    EXPECT_SAME(f.stringers.offset_deg, g.stringers.offset_deg);
+    EXPECT_EQ(f.floor.present, g.floor.present);
+    EXPECT_SAME(f.floor.height, g.floor.height);
+    EXPECT_SAME(f.floor.thickness, g.floor.thickness);
+    EXPECT_SAME(f.floor.dx, g.floor.dx);
+    EXPECT_EQ(f.columns.x, g.columns.x);
+    EXPECT_SAME(f.columns.width, g.columns.width);
   }
   EXPECT_SAME(a.output.interval, b.output.interval);
   EXPECT_SAME(a.output.probe_interval, b.output.probe_interval);
@@ -277,4 +294,56 @@ max = [0.5, 0.2]
   const std::string text = resolved_case_toml(a);
   EXPECT_EQ(text.find("[fluid]"), std::string::npos);
   expect_equal(a, parse_case_string(text, "s.resolved.toml"));
+}
+
+TEST(IoCaseRoundTrip, FuselageShape) {
+  const std::string t = R"(schema_version = 1
+name = "fuselage"
+[numerics]
+dx = 0.006
+end_time = 1
+[numerics.domain]
+min = [0, 0]
+max = [3, 3]
+[fluid]
+sound_speed = 65
+[[fluid.block]]
+min = [0, 0]
+max = [3, 2]
+[materials.al]
+density = 2700
+youngs_modulus = 67.5e9
+poisson_ratio = 0.34
+[[body]]
+name = "f"
+material = "al"
+velocity = [0, -5]
+[body.shape]
+type = "fuselage"
+centre = [1.5, 2.3]
+diameter = 0.6
+[body.shape.skin]
+thickness = 0.003
+layers = 2
+[body.shape.stringers]
+count = 30
+section = "L"
+height = 0.024
+web_thickness = 0.003
+flange_width = 0.015
+flange_thickness = 0.003
+[body.shape.floor]
+height = -0.09
+thickness = 0.01
+[body.shape.columns]
+x = [-0.1215, 0.1215]
+width = 0.009
+)";
+  const CaseConfig a = parse_case_string(t, "f.toml");
+  EXPECT_EQ(a.bodies[0].dx, 0.0015);  // the skin's spacing, its finest part
+  EXPECT_EQ(a.bodies[0].shape.fuselage.floor.dx, 0.0015);  // default: the skin's
+  const std::string text = resolved_case_toml(a);
+  const CaseConfig b = parse_case_string(text, "f.resolved.toml");
+  expect_equal(a, b);
+  EXPECT_EQ(resolved_case_toml(b), text);
 }
