@@ -54,8 +54,9 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
   if (!(s.skin_thickness > 0.0) || !(s.skin_thickness < 0.25 * s.diameter))
     fail("skin.thickness", "the skin thickness must be in (0, D/4)");
   if (s.skin_layers < 2)
-    fail("skin.layers", "a skin needs at least 2 particle layers (the solid's gradient needs "
-                        "a non-collinear neighbour set)");
+    fail("skin.layers",
+         "a skin needs at least 2 particle layers (the solid's gradient needs "
+         "a non-collinear neighbour set)");
   const double d = s.skin_spacing();
   const double r_out = 0.5 * s.diameter, r_in = r_out - s.skin_thickness;
   const long n = fuselage_skin_count(s);
@@ -82,8 +83,8 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
            "a web needs at least 2 particles across (web_thickness >= 2 arc steps = " +
                mm(2 * arc_in) + ")");
     if (m_f < m_w + 1)
-      fail("stringers.flange_width", "the flange must be wider than the web by >= 1 arc step (" +
-                                         mm(arc_in) + ")");
+      fail("stringers.flange_width",
+           "the flange must be wider than the web by >= 1 arc step (" + mm(arc_in) + ")");
     if (st.section == "I" && (m_f - m_w) % 2 != 0)
       fail("stringers.flange_width",
            "an I flange centred on its web needs (flange_width - web_thickness) an even number "
@@ -91,10 +92,10 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
                std::to_string(m_f) + " and " + std::to_string(m_w) + " steps of " + mm(arc_in) +
                "); expected e.g. flange_width " + mm(static_cast<double>(m_f + 1) * arc_in));
     if (m_f + 2 > n / st.count)
-      fail("stringers.flange_width",
-           "the stringers do not fit: " + std::to_string(st.count) + " flanges of " +
-               std::to_string(m_f) + " arc steps need >= 2 steps between them (" +
-               std::to_string(n / st.count) + " steps per stringer)");
+      fail("stringers.flange_width", "the stringers do not fit: " + std::to_string(st.count) +
+                                         " flanges of " + std::to_string(m_f) +
+                                         " arc steps need >= 2 steps between them (" +
+                                         std::to_string(n / st.count) + " steps per stringer)");
     rows = whole(st.height, d, "stringers.height", "the stringer height");
     rows_f = whole(st.flange_thickness, d, "stringers.flange_thickness", "the flange thickness");
     const long web_rows = rows - (st.section == "I" ? 2 : 1) * rows_f;
@@ -120,12 +121,21 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
   }
   const auto stringer = static_cast<std::uint32_t>(FuselagePart::Stringers);
   const long per = st.count > 0 ? n / st.count : 0;
+  // First arc step of stringer c's flange relative to its angle: centred (I); for an L,
+  // flush with the web's counter-clockwise-most step on the right half (cos θ >= 0, the
+  // flange extends counter-clockwise) and mirrored on the left half, so the section is
+  // symmetric about the vertical line through the centre (the grid is: n is even).
+  auto flange_start = [&](int c) {
+    if (st.section == "I") return run_start(m_f);
+    const double mid = th0 + static_cast<double>(c * per) * dth;
+    return std::cos(mid) >= -1e-12 ? run_start(m_w) : run_start(m_w) + m_w - m_f;
+  };
   for (int c = 0; c < st.count; ++c)
     for (long q = 0; q < rows; ++q) {
       const bool flange =
           q < rows_f || (st.section == "I" && q >= rows - rows_f);  // foot / inner flange
       const long m = flange ? m_f : m_w;
-      const long j0 = (flange && st.section == "L") ? run_start(m_w) : run_start(m);
+      const long j0 = flange ? flange_start(c) : run_start(m);
       const double hi = r_in - q * d, lo = r_in - (q + 1) * d;
       const double v = 0.5 * (hi * hi - lo * lo) * dth;
       for (long j = j0; j < j0 + m; ++j)
@@ -174,9 +184,10 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
       const double left = sorted[c] - 0.5 * co.width;
       const double q = left / df;
       if (std::abs(q - std::round(q)) > kWhole * std::max(1.0, std::abs(q)))
-        fail("columns.x", "column at x = " + mm(sorted[c]) + ": its edges (x ± width/2) must "
-                          "lie on the floor's cell boundaries, multiples of " + mm(df) +
-                          " from the centre");
+        fail("columns.x", "column at x = " + mm(sorted[c]) +
+                              ": its edges (x ± width/2) must "
+                              "lie on the floor's cell boundaries, multiples of " +
+                              mm(df) + " from the centre");
       if (!(std::abs(sorted[c]) + 0.5 * co.width < L_floor - 2.0 * df))
         fail("columns.x", "column at x = " + mm(sorted[c]) + " does not stand under the floor");
       if (c > 0 && left < sorted[c - 1] + 0.5 * co.width + 2.0 * df)
@@ -197,10 +208,6 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
   // height plus half a cell, angularly within its flange's outer cell edges plus half a
   // cell): overlap.
   if (st.count > 0) {
-    const long lo = st.section == "L" ? run_start(m_w) : run_start(m_f), hi = lo + m_f - 1;
-    const double reach_steps =
-        std::max(std::abs(static_cast<double>(lo) + phase), std::abs(static_cast<double>(hi) + phase)) +
-        0.5;
     for (std::size_t i = 0; i < out.size(); ++i) {
       if (out.part[i] != floor_id && out.part[i] != column_id) continue;
       const Vec2 p = out.x[i] - centre;
@@ -209,8 +216,12 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
       const double a = std::atan2(p.y, p.x);
       for (int c = 0; c < st.count; ++c) {
         const double mid = th0 + static_cast<double>(c * per) * dth;
-        const double da = std::remainder(a - mid, 2.0 * kPi);
-        if (std::abs(da) <= reach_steps * dth + 0.5 * df / r)
+        // The flange's cells span steps [lo − ½, hi + ½] (+ phase) around `mid`.
+        const double lo = static_cast<double>(flange_start(c)) + phase - 0.5;
+        const double hi = lo + static_cast<double>(m_f);
+        const double da = std::remainder(a - mid, 2.0 * kPi) / dth;
+        const double margin = 0.5 * df / (r * dth);
+        if (da >= lo - margin && da <= hi + margin)
           fail("stringers.offset_deg",
                "stringer " + std::to_string(c) + " (at " + std::to_string(mid * 180.0 / kPi) +
                    " deg) overlaps the " + fuselage_part_names()[out.part[i]] + " near (" +
@@ -233,10 +244,10 @@ ParticleLattice fuselage_section(Vec2 centre, const FuselageShape& s) {
       if (norm(out.x[j] - out.x[i]) < 0.3 * (out.spacing[i] + out.spacing[j])) {
         const auto& names = fuselage_part_names();
         const std::string a = names[out.part[i]], b = names[out.part[j]];
-        const std::string key = (a == "stringers" || b == "stringers") ? "stringers.offset_deg"
-                                                                       : "columns.x";
-        fail(key, "parts '" + a + "' and '" + b + "' overlap near (" +
-                      mm(out.x[i].x - centre.x) + ", " + mm(out.x[i].y - centre.y) +
+        const std::string key =
+            (a == "stringers" || b == "stringers") ? "stringers.offset_deg" : "columns.x";
+        fail(key, "parts '" + a + "' and '" + b + "' overlap near (" + mm(out.x[i].x - centre.x) +
+                      ", " + mm(out.x[i].y - centre.y) +
                       ") from the centre; expected a stringer offset, floor height or column "
                       "position that keeps them apart");
       }

@@ -9,8 +9,10 @@
 //   of depth d at r_in − (q+½)d), so skin and stringer form one regular 4-neighbour grid
 //   (a misaligned junction made session 3's face-laid lattice unstable). Widths are whole
 //   numbers of arc steps measured on the inner skin face; "I": foot flange, web, inner
-//   flange, all centred on the stringer angle; "L": foot flange with the web at its
-//   clockwise edge. Flanges and webs are therefore slightly tapered (arc spacing ∝ r).
+//   flange, all centred on the stringer angle; "L": web on a foot flange that extends to
+//   one side — counter-clockwise on the right half (x ≥ centre), clockwise on the left, so
+//   the section stays mirror-symmetric about the vertical centre line (offset_deg = 0).
+//   Flanges and webs are slightly tapered (arc spacing ∝ r).
 // - Floor: a Cartesian lattice of spacing d_f (floor.dx) symmetric about the centre line,
 //   rows of cells [j d_f, (j+1) d_f]; the last cell of each row is stretched or shrunk to
 //   end exactly on the inner skin face (length in [½, 3/2) d_f), so the floor spans skin

@@ -12,9 +12,9 @@
 namespace slamsph {
 
 struct ParticleLattice {
-  std::vector<Vec2> x;         // position [m]
-  std::vector<double> volume;  // area represented by the particle [m^2]
-  std::vector<int> layer;      // layer index (0 = innermost / nearest the surface), -1 if none
+  std::vector<Vec2> x;              // position [m]
+  std::vector<double> volume;       // area represented by the particle [m^2]
+  std::vector<int> layer;           // layer index (0 = innermost / nearest the surface), -1 if none
   std::vector<std::uint32_t> part;  // part id (0 for one-part shapes)
   std::vector<double> spacing;      // the particle's own spacing [m] (0: the body's dx)
 

@@ -38,8 +38,7 @@ std::vector<std::string> names_of(const Table& table) {
 }
 const std::vector<std::string> kKinds = names_of(kBodyKindNames);
 const std::vector<std::string> kSchemes = names_of(kSolidSchemeNames);
-const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank",
-                                       "fuselage"};
+const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank", "fuselage"};
 const std::vector<std::string> kSections{"I", "L"};
 const std::vector<std::string> kProbeKinds{
     "pressure",          "surge_front", "water_height",      "max_speed",       "body_pressure",
@@ -421,8 +420,8 @@ void parse_fuselage(const Reader& r, const std::string& kind, double dx, const C
   const std::string le = "a whole number of layers in [2, 1000]";
   const auto l = sk->integer("layers", le);
   if (l && (*l < 2 || *l > 1000)) sk->bad("layers", "must be in [2, 1000]", le, std::to_string(*l));
-  f.skin_layers = l ? static_cast<int>(*l)
-                    : std::max(2, static_cast<int>(std::lround(f.skin_thickness / dx)));
+  f.skin_layers =
+      l ? static_cast<int>(*l) : std::max(2, static_cast<int>(std::lround(f.skin_thickness / dx)));
   s.inner_radius = s.outer_radius - f.skin_thickness;
   s.layers = f.skin_layers;
   // The body's spacing is the skin's (its finest part); it must be a supported ratio to the
@@ -451,8 +450,7 @@ void parse_fuselage(const Reader& r, const std::string& kind, double dx, const C
     g.height = num(*st, "height", positive("the height from the inner skin face in m"));
     g.web_thickness = num(*st, "web_thickness", positive("a positive web thickness in m"));
     g.flange_width = num(*st, "flange_width", positive("a positive flange width in m"));
-    g.flange_thickness =
-        num(*st, "flange_thickness", positive("a positive flange thickness in m"));
+    g.flange_thickness = num(*st, "flange_thickness", positive("a positive flange thickness in m"));
     g.offset_deg = num(*st, "offset_deg", any("an angle in degrees from +x, CCW"), 0.0);
     st->check(g.height < 0.5 * s.inner_radius, "height", "must be < inner radius / 2",
               "a stringer height in m", g.height);

@@ -58,8 +58,8 @@ void select_fpm_sets(std::span<const Vec2> X, double dx, const Executor& exec,
   select_fpm_sets(X, spacing, exec, sets);
 }
 
-void select_fpm_sets(std::span<const Vec2> X, std::span<const double> spacing,
-                     const Executor& exec, NeighbourList& sets) {
+void select_fpm_sets(std::span<const Vec2> X, std::span<const double> spacing, const Executor& exec,
+                     NeighbourList& sets) {
   const std::size_t n = X.size();
   if (spacing.size() != n)
     throw std::invalid_argument("select_fpm_sets: one spacing per particle expected");

@@ -26,7 +26,7 @@ void select_fpm_sets(std::span<const Vec2> X, double dx, const Executor& exec, N
 // The same with each particle's own spacing (a body of parts with different spacings):
 // particle i's candidate radius, boundary test and weight use spacing[i], so a particle of
 // a coarse part next to a fine one selects among the fine particles within its own reach.
-void select_fpm_sets(std::span<const Vec2> X, std::span<const double> spacing,
-                     const Executor& exec, NeighbourList& sets);
+void select_fpm_sets(std::span<const Vec2> X, std::span<const double> spacing, const Executor& exec,
+                     NeighbourList& sets);
 
 }  // namespace slamsph

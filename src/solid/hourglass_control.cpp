@@ -11,9 +11,9 @@ namespace {
 // callgrind: +10 % instructions on the oscillating plate).
 // κ_ij with the pair's reference kernel value (solid_topology.h: symmetric h_ij, so parts
 // of different spacing get a symmetric stiffness).
-[[gnu::always_inline]] inline double pair_stiffness(const SolidBody& body, const SolidTopology& topo,
-                                                    double alpha, std::size_t i, std::size_t j,
-                                                    std::uint32_t k) {
+[[gnu::always_inline]] inline double pair_stiffness(const SolidBody& body,
+                                                    const SolidTopology& topo, double alpha,
+                                                    std::size_t i, std::size_t j, std::uint32_t k) {
   const double r = norm(body.X[j] - body.X[i]);
   return alpha * body.material.youngs_modulus * body.V0[i] * body.V0[j] * topo.w0[k] / (r * r);
 }

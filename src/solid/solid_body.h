@@ -60,18 +60,18 @@ struct SolidBody {
   bool feels_gravity = true;
 
   // Per particle.
-  std::vector<Vec2> X;                // reference position [m]
-  std::vector<Vec2> x;                // current position [m]
-  std::vector<Vec2> v;                // velocity [m/s]
-  std::vector<Vec2> a;                // acceleration [m/s^2]
-  std::vector<double> m;              // mass [kg/m]
-  std::vector<double> V0;             // reference volume [m^2]
-  std::vector<double> rho0;           // reference density [kg/m^3]
-  std::vector<Vec2> f_fluid;          // fluid force on the particle, held over sub-steps [N/m]
-  std::vector<std::uint8_t> clamped;  // 1 = held fixed
-  std::vector<int> layer;             // ring layer through the thickness (-1 if none)
-  std::vector<std::uint32_t> part;    // part id (index into part_names; 0 for one-part bodies)
-  std::vector<double> spacing;        // the particle's own spacing (parts may differ) [m]
+  std::vector<Vec2> X;                  // reference position [m]
+  std::vector<Vec2> x;                  // current position [m]
+  std::vector<Vec2> v;                  // velocity [m/s]
+  std::vector<Vec2> a;                  // acceleration [m/s^2]
+  std::vector<double> m;                // mass [kg/m]
+  std::vector<double> V0;               // reference volume [m^2]
+  std::vector<double> rho0;             // reference density [kg/m^3]
+  std::vector<Vec2> f_fluid;            // fluid force on the particle, held over sub-steps [N/m]
+  std::vector<std::uint8_t> clamped;    // 1 = held fixed
+  std::vector<int> layer;               // ring layer through the thickness (-1 if none)
+  std::vector<std::uint32_t> part;      // part id (index into part_names; 0 for one-part bodies)
+  std::vector<double> spacing;          // the particle's own spacing (parts may differ) [m]
   std::vector<std::string> part_names;  // name per part id (a fuselage: skin, stringers, ...)
 
   RigidState rigid;                        // used by rigid kinds

@@ -32,7 +32,8 @@ void pair_lengths(std::span<const Vec2> X, std::span<const double> spacing,
   const std::size_t n = X.size();
   const double hb = spec.kernel.h();
   t.h.resize(n);
-  for (std::size_t i = 0; i < n; ++i) t.h[i] = spacing[i] == spec.dx ? hb : hb * spacing[i] / spec.dx;
+  for (std::size_t i = 0; i < n; ++i)
+    t.h[i] = spacing[i] == spec.dx ? hb : hb * spacing[i] / spec.dx;
   t.w0.resize(t.pairs.index.size());
   exec.for_each(n, [&](std::size_t i) {
     for (std::uint32_t k = t.pairs.start[i]; k < t.pairs.start[i + 1]; ++k) {

@@ -56,9 +56,9 @@ struct SolidTopology {
   std::vector<Mat2> B;      // correction matrix (Eq. 11; TL-SFPM: the FPM M_i⁻¹) [m^-2 m^2]
   std::vector<Vec2> grad0;  // g_ij = V0_j B_i ∇0W_ij per pair (0 if j not in S_i) [1/m]
   std::vector<std::uint32_t> part;  // part id per particle
-  std::vector<double> w0;  // W_{h_ij}(|X_j − X_i|) per pair, symmetric [1/m^2]
-  std::vector<double> h;   // smoothing length per particle [m]
-  double max_gradient = 0.0;  // max |g_ij| over all pairs [1/m] (solid stable step)
+  std::vector<double> w0;           // W_{h_ij}(|X_j − X_i|) per pair, symmetric [1/m^2]
+  std::vector<double> h;            // smoothing length per particle [m]
+  double max_gradient = 0.0;        // max |g_ij| over all pairs [1/m] (solid stable step)
 
   std::size_t size() const { return pairs.size(); }
 };

@@ -340,7 +340,7 @@ x = [-0.1215, 0.1215]
 width = 0.009
 )";
   const CaseConfig a = parse_case_string(t, "f.toml");
-  EXPECT_EQ(a.bodies[0].dx, 0.0015);  // the skin's spacing, its finest part
+  EXPECT_EQ(a.bodies[0].dx, 0.0015);                       // the skin's spacing, its finest part
   EXPECT_EQ(a.bodies[0].shape.fuselage.floor.dx, 0.0015);  // default: the skin's
   const std::string text = resolved_case_toml(a);
   const CaseConfig b = parse_case_string(text, "f.resolved.toml");
