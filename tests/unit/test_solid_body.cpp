@@ -211,6 +211,6 @@ TEST(SolidBodyOutput, FieldsAndSizes) {
     if (spec.vtk) vtk.emplace_back(spec.name);
   });
   EXPECT_EQ(vtk, (std::vector<std::string>{"velocity", "fluid_force", "deformation_gradient",
-                                           "pk1_stress"}));
+                                           "pk1_stress", "part"}));
   EXPECT_EQ(rigid_body("rigid_fixed").volume(2), kDx * kDx);
 }

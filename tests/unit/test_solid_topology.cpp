@@ -22,7 +22,7 @@ namespace {
 constexpr double kDx = 0.01;
 
 TopologySpec spec(SolidScheme s, std::vector<std::uint32_t> part = {}, bool bond = false) {
-  return {s, kDx, Kernel(KernelType::WendlandC2, 1.3 * kDx), std::move(part), bond};
+  return {s, kDx, Kernel(KernelType::WendlandC2, 1.3 * kDx), std::move(part), bond, {}};
 }
 
 // The lists of particle i as global indices.
