@@ -1,6 +1,7 @@
 #include "app/recorder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 #include <type_traits>
@@ -9,12 +10,14 @@
 #include "app/validation_report.h"
 #include "core/error.h"
 #include "core/parallel.h"
+#include "fluid/fluid_energy.h"
 #include "io/atomic_file.h"
 #include "io/case_file.h"
 #include "io/csv_writer.h"
 #include "io/json_writer.h"
 #include "io/vtk_writer.h"
 #include "solid/body_dynamics.h"
+#include "solid/body_energy.h"
 
 namespace slamsph {
 
@@ -51,7 +54,8 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     if (!resume) OutputFolder::check_free(dir, opt_.overwrite);
     folder_ = std::make_unique<OutputFolder>(
         dir, resume ? OutputFolder::Mode::Continue : OutputFolder::Mode::Fresh);
-    std::vector<std::string> names{"summary.json", "case.resolved.toml", "probes.csv"};
+    std::vector<std::string> names{"summary.json", "case.resolved.toml", "probes.csv",
+                                   "energy.csv"};
     if (!bodies.empty()) names.insert(names.end(), {"forces.csv", "bodies.csv"});
     if (cfg_.output.vtk) names.insert(names.end(), {"vtk/", "fields.pvd"});
     if (opt_.checkpoint_interval > 0.0) names.push_back("checkpoints/");
@@ -94,6 +98,27 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     hp.push_back("leaked_particles [-]");
     probes_csv_ = csv("probes.csv", hp);
     if (failure_log_.active()) failure_csv_ = csv("failure.csv", FailureLog::headers());
+    std::vector<std::string> he{"time [s]", "fluid kinetic [J/m]", "fluid potential [J/m]",
+                                "fluid internal [J/m]"};
+    for (const SolidBody& b : bodies) {
+      if (b.kind == BodyKind::RigidPrescribed) he.push_back(b.name + " fluid_work [J/m]");
+      if (b.kind != BodyKind::Elastic && b.kind != BodyKind::RigidFree) continue;
+      for (const char* q : {"kinetic [J/m]", "strain [J/m]", "hourglass [J/m]", "dissipated [J/m]",
+                            "gravity_work [J/m]", "fluid_work [J/m]", "residual [J/m]"})
+        he.push_back(b.name + " " + q);
+    }
+    he.insert(he.end(), {"fluid residual [J/m]", "residual [J/m]"});
+    energy_csv_ = csv("energy.csv", he);
+  }
+  if (!resume) {  // the energy balance is measured from the state at t = 0
+    const Vec2 g = st_.params().gravity;
+    const FluidEnergies f = fluid_energies(st_.system().fluid, st_.system().eos, g);
+    energy0_ = {f.potential, f.kinetic + f.potential + f.internal};
+    for (const SolidBody& b : bodies) {
+      if (b.kind != BodyKind::Elastic && b.kind != BodyKind::RigidFree) continue;
+      const BodyEnergyTerms t = body_energy_terms(b, g);
+      energy0_.insert(energy0_.end(), {t.kinetic + t.strain + t.hourglass, t.potential});
+    }
   }
   prev_loads_ = st_.body_loads();
   if (!resume) record_loads(0.0);  // a resumed run has this row already
@@ -101,8 +126,8 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
 
 std::vector<CsvResume> Recorder::csv_state() const {
   std::vector<CsvResume> out;
-  for (const CsvWriter* w :
-       {forces_.get(), probes_csv_.get(), bodies_csv_.get(), failure_csv_.get()}) {
+  for (const CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get(), energy_csv_.get(),
+                             failure_csv_.get()}) {
     if (!w) continue;
     const std::string name = std::filesystem::path(w->path()).filename().string();
     out.push_back({name, std::filesystem::file_size(w->path()), w->rows_written()});
@@ -151,6 +176,46 @@ void Recorder::record_bodies() {
                 m.mean_acceleration.y, e.kinetic, e.strain, e.dissipated, e.hourglass});
   }
   bodies_csv_->row(row);
+}
+
+// One row of energy.csv (README "Energy balance"). Fluid: R_f = Δ(K + V + U)_fluid + Σ W_fluid
+// over the moving bodies (the energy the water gave them). Each elastic or rigid_free body:
+// R_b = Δ(K + Ψ + E_hg) + D − W_gravity − W_fluid. The residual R = R_f + Σ R_b is what the
+// discretisation lost (< 0) or made (> 0): mostly the Riemann solver's dissipation in the water.
+void Recorder::record_energy() {
+  if (!energy_csv_) return;
+  const Vec2 g = st_.params().gravity;
+  const FluidEnergies f = fluid_energies(st_.system().fluid, st_.system().eos, g);
+  std::vector<double> row{st_.time(), f.kinetic, f.potential - energy0_[0], f.internal};
+  double fluid_res = f.kinetic + f.potential + f.internal - energy0_[1];
+  double total = 0.0;
+  std::size_t k = 2;
+  for (const SolidBody& b : st_.system().bodies) {
+    const BodyEnergyTerms t = body_energy_terms(b, g);
+    if (b.kind == BodyKind::RigidPrescribed) {
+      row.push_back(t.external_work);  // only the fluid's (solid/rigid_motion.cpp)
+      fluid_res += t.external_work;
+    }
+    if (b.kind != BodyKind::Elastic && b.kind != BodyKind::RigidFree) continue;
+    const double w_gravity = energy0_[k + 1] - t.potential;
+    const double w_fluid = t.external_work - w_gravity;
+    const double res =
+        t.kinetic + t.strain + t.hourglass - energy0_[k] + t.dissipated - w_gravity - w_fluid;
+    k += 2;
+    row.insert(row.end(),
+               {t.kinetic, t.strain, t.hourglass, t.dissipated, w_gravity, w_fluid, res});
+    fluid_res += w_fluid;
+    total += res;
+  }
+  total += fluid_res;
+  row.insert(row.end(), {fluid_res, total});
+  // The scale of the balance: the largest |term| written so far (residual columns aside).
+  for (std::size_t c = 1; c + 2 < row.size(); ++c)
+    if (energy_csv_->headers()[c].find(" residual [") == std::string::npos)
+      energy_scale_ = std::max(energy_scale_, std::abs(row[c]));
+  energy_max_residual_ = std::max(energy_max_residual_, std::abs(total));
+  energy_last_residual_ = total;
+  energy_csv_->row(row);
 }
 
 void Recorder::write_frame() {
@@ -209,6 +274,7 @@ void Recorder::before_step() {
     if (vtk_) write_frame();
     frame_step_ = st_.steps();
     record_bodies();
+    record_energy();
     next_vtk_ += vtk_dt_;
   }
   prev_loads_ = st_.body_loads();
@@ -221,7 +287,7 @@ void Recorder::after_step() {
 }
 
 void Recorder::finish() {
-  if (opt_.write_output) record_probes(), record_bodies();
+  if (opt_.write_output) record_probes(), record_bodies(), record_energy();
   if (vtk_) write_frame();
 }
 
@@ -243,7 +309,8 @@ void Recorder::flush() {
       if (!first) first = e;
     }
   };
-  for (CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get(), failure_csv_.get()})
+  for (CsvWriter* w :
+       {forces_.get(), probes_csv_.get(), bodies_csv_.get(), energy_csv_.get(), failure_csv_.get()})
     if (w) attempt([&] { w->flush(); });
   if (folder_) attempt([&] { folder_->record(); });
   if (first) throw *first;
@@ -297,6 +364,16 @@ void Recorder::write_summary(const RunStatus& status) const {
   }
   summary.set("bodies", loads);
   if (failure_log_.active()) summary.set("failures", failure_log_.summary(sys.bodies));
+  if (energy_csv_) {
+    // energy.csv's residual against its largest term (README "Energy balance").
+    JsonObject en;
+    en.set("residual_J_per_m", energy_last_residual_);
+    en.set("largest_term_J_per_m", energy_scale_);
+    const double s = energy_scale_ > 0.0 ? energy_scale_ : 1.0;
+    en.set("residual_relative", energy_last_residual_ / s);
+    en.set("max_abs_residual_relative", energy_max_residual_ / s);
+    summary.set("energy_balance", en);
+  }
   if (state == "completed" && opt_.write_output) {
     JsonObject validation;
     if (validation_report(cfg_, opt_.out_dir, validation)) summary.set("validation", validation);

@@ -1,6 +1,6 @@
 // The recorder: everything a run writes and remembers about its own history — the output
-// folder (case.resolved.toml, forces.csv, probes.csv, bodies.csv, the VTK series,
-// summary.json), when the next probe row and VTK frame are due, and the peak force and
+// folder (case.resolved.toml, forces.csv, probes.csv, bodies.csv, energy.csv, the VTK
+// series, summary.json), when the next probe row and VTK frame are due, and the peak force and
 // impulse of each body. It reads the stepper's state and never changes it.
 //
 // Per step the driver calls before_step() (probe rows and VTK frames due at the current
@@ -90,6 +90,10 @@ class Recorder {
     f("impulse", s.impulse_);
     f("wall_seconds_before", s.wall_before_);
     f("first_failure", s.failure_log_.first);
+    f("energy_initial", s.energy0_);
+    f("energy_largest_term", s.energy_scale_);
+    f("energy_max_residual", s.energy_max_residual_);
+    f("energy_last_residual", s.energy_last_residual_);
   }
   // Wall time of the segments before this one (resumed runs) plus `segment`.
   double wall_seconds(double segment) const { return wall_before_ + segment; }
@@ -98,6 +102,7 @@ class Recorder {
   void record_loads(double dt_prev);
   void record_probes();
   void record_bodies();
+  void record_energy();
   void write_frame();
 
   const CaseConfig& cfg_;
@@ -108,7 +113,7 @@ class Recorder {
   std::unique_ptr<OutputFolder> folder_;
   std::vector<std::string> warnings_;  // set-up warnings, for summary.json
   std::unique_ptr<VtkSeries> vtk_;
-  std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_;
+  std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_, energy_csv_;
   FailureLog failure_log_;                  // failed particles (app/failure_log.h)
   std::unique_ptr<CsvWriter> failure_csv_;  // failure.csv, when a law can fail
 
@@ -119,6 +124,11 @@ class Recorder {
   std::vector<Vec2> peak_, impulse_;  // per body [N/m], [N s/m]
   std::vector<double> peak_mag_, peak_time_;
   double wall_before_ = 0.0;  // [s] wall time of earlier segments of a resumed run
+  // Energy balance (energy.csv): the state at t = 0 (fluid potential, fluid total, then per
+  // elastic or rigid_free body its kinetic + strain + hourglass and its potential), the
+  // largest |term| written, the largest |residual| and the last residual [J/m].
+  std::vector<double> energy0_;
+  double energy_scale_ = 0.0, energy_max_residual_ = 0.0, energy_last_residual_ = 0.0;
 };
 
 }  // namespace slamsph

@@ -82,7 +82,13 @@ void advance_rigid(SolidBody& body, double t, double dt, Vec2 gravity) {
     case BodyKind::RigidPrescribed: {
       const Vec2 v0 = prescribed_velocity(body.motion, t);
       const Vec2 v1 = prescribed_velocity(body.motion, t + dt);
-      r.com += prescribed_displacement(body.motion, t, t + dt);
+      const Vec2 step = prescribed_displacement(body.motion, t, t + dt);
+      // Work of the fluid on the driven body (energy balance): the force held over the
+      // step times the displacement the body makes; gravity's is the driver's business.
+      Vec2 force;
+      for (std::size_t i = 0; i < body.size(); ++i) force += body.f_fluid[i];
+      body.external_work += dot(force, step);
+      r.com += step;
       r.vel = v1;
       r.acc = dt > 0.0 ? (v1 - v0) / dt : Vec2{};
       r.omega = r.alpha = 0.0;

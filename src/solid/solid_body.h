@@ -98,7 +98,8 @@ struct SolidBody {
   double dissipated = 0.0;      // work removed by artificial viscosity
   double hourglass_work = 0.0;  // work done against the hourglass control (its potential
                                 // is reported by body_energies; this is a cross-check)
-  double external_work = 0.0;   // work done by gravity and the fluid force
+  double external_work = 0.0;   // work done by gravity and the fluid force (rigid_prescribed:
+                                // the fluid force only; rigid_fixed: none)
 
   // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
   // clamps, layers; the topology) is rebuilt from the case by setup_body, so it is not persistent;
