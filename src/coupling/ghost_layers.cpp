@@ -2,21 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/cell_grid.h"
 
 namespace slamsph {
 
 std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
-                                         const std::vector<Vec2>& normals, double d, double support,
+                                         const std::vector<Vec2>& normals,
+                                         std::span<const double> spacing, double support,
                                          double ghost_spacing) {
   std::vector<GhostSpec> out;
   if (X.empty()) return out;
-  const int K = static_cast<int>(std::ceil(support / d - 1e-9));
-  const int m = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
+  if (spacing.size() != X.size())
+    throw std::invalid_argument("plan_ghost_layers: one spacing per particle expected");
+  // Cells as large as the coarsest probe radius (0.75 d_max) so the 3x3 search sees it.
+  double dmax = 0.0;
+  for (double d : spacing) dmax = std::max(dmax, d);
   CellGrid grid;
-  grid.build(X, d);
-  auto occupied = [&](Vec2 p) {
+  grid.build(X, dmax);
+  auto occupied = [&](Vec2 p, double d) {
     bool found = false;
     grid.for_each_candidate(p, [&](std::uint32_t j) {
       if (norm2(X[j] - p) < 0.5625 * d * d)
@@ -27,8 +32,11 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
   for (std::size_t i = 0; i < X.size(); ++i) {
     const Vec2 n = normals[i];
     if (norm2(n) == 0.0) continue;
+    const double d = spacing[i];
+    const int K = static_cast<int>(std::ceil(support / d - 1e-9));
+    const int m = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
     int present = 0;
-    while (present < K && occupied(X[i] - (present + 1) * d * n)) ++present;
+    while (present < K && occupied(X[i] - (present + 1) * d * n, d)) ++present;
     // Cells of m layers from the back face (present + 1/2) d until K d is covered; with
     // m = 1 the depths are present + 1 ... K exactly.
     const int cells = (K - present + m - 1) / m;
@@ -37,6 +45,13 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
           {static_cast<std::uint32_t>(i), present + 0.5 + (j + 0.5) * m, static_cast<double>(m)});
   }
   return out;
+}
+
+std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
+                                         const std::vector<Vec2>& normals, double d, double support,
+                                         double ghost_spacing) {
+  const std::vector<double> spacing(X.size(), d);
+  return plan_ghost_layers(X, normals, spacing, support, ghost_spacing);
 }
 
 }  // namespace slamsph

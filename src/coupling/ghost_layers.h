@@ -12,6 +12,7 @@
 // each side, and its forces are returned to the parent (momentum stays exact).
 #pragma once
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/vec.h"
@@ -20,20 +21,28 @@ namespace slamsph {
 
 struct GhostSpec {
   std::uint32_t parent = 0;  // particle index in the body
-  double depth = 0.0;        // in body spacings d: the ghost sits at x - depth d n
+  double depth = 0.0;        // in the parent's spacing d_i: the ghost sits at x - depth d_i n
   double weight = 1.0;       // ghost volume / parent volume (the body layers it stands for)
 };
 
-// From the reference configuration: for each particle with a non-zero normal, count the
-// body layers present behind it (a body particle within 0.75 d of X - k d N for k = 1, 2,
-// ...), and fill the missing depths from (present + 1/2) d to (K + 1/2) d, K =
-// ceil(support / d), with ghost cells m layers deep, m = max(1, floor(ghost_spacing / d)):
-// ghosts at depths present + 1/2 + (j + 1/2) m, weight m. With m = 1 this is one ghost per
-// missing layer k = present+1 .. K. The contact layout asks for cells half a water spacing
-// deep (docs/model.md §4, "Bodies finer than the water"): the ghosts only complete the
-// water kernel's support, and at that depth they do it as well as one ghost per body layer
-// (tests/unit/test_coupling_spacing_ratio.cpp: residual 0.015 vs 0.014 at r = 8) with 5
-// ghosts per surface particle instead of 20.
+// From the reference configuration: for each particle i with a non-zero normal and its own
+// spacing d_i, count the body layers present behind it (a body particle within 0.75 d_i of
+// X - k d_i N for k = 1, 2, ...), and fill the missing depths from (present + 1/2) d_i to
+// (K + 1/2) d_i, K = ceil(support / d_i), with ghost cells m layers deep, m = max(1,
+// floor(ghost_spacing / d_i)): ghosts at depths present + 1/2 + (j + 1/2) m, weight m. With
+// m = 1 this is one ghost per missing layer k = present+1 .. K. The contact layout asks for
+// cells half a water spacing deep (docs/model.md §4, "Bodies finer than the water"): the
+// ghosts only complete the water kernel's support, and at that depth they do it as well as
+// one ghost per body layer (tests/unit/test_coupling_spacing_ratio.cpp: residual 0.015 vs
+// 0.014 at r = 8) with 5 ghosts per surface particle instead of 20.
+// Per-particle spacings (a body of parts, e.g. a fuselage's 1.5 mm skin and 5 mm floor):
+// each part is probed and filled at its own layer spacing; probing a coarse part at the
+// finest spacing would miss its own layers and put ghosts inside it.
+std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
+                                         const std::vector<Vec2>& normals,
+                                         std::span<const double> spacing, double support,
+                                         double ghost_spacing = 0.0);
+// One spacing d for every particle.
 std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
                                          const std::vector<Vec2>& normals, double d, double support,
                                          double ghost_spacing = 0.0);

@@ -97,6 +97,51 @@ TEST(CouplingGhostLayers, TwoLayerRingGhostsLieOnConcentricCircles) {
   }
 }
 
+// A body of parts with their own spacings (a fuselage's fine skin and coarser floor): each
+// part is probed at its own layer spacing. Probing the coarse part at the finest spacing
+// finds nothing between its layers (half a coarse spacing away, beyond 0.75 d) and fills
+// it with ghosts inside itself; this test fails then.
+TEST(CouplingGhostLayers, EachPartOfATwoSpacingBodyIsProbedAtItsOwnSpacing) {
+  const double d = 0.005, D = 0.01;         // fine skin, coarse block
+  const double support = 2.0 * 1.3 * 0.01;  // water at 0.01 m, h = 1.3 dx
+  const double cell = 0.005;                // half a water spacing
+  std::vector<Vec2> fine, coarse;
+  for (int j = 0; j < 2; ++j)  // 2-layer skin
+    for (int i = 0; i < 40; ++i) fine.push_back({(i + 0.5) * d, (j + 0.5) * d});
+  for (int j = 0; j < 4; ++j)  // 4-layer block: fills the water's support at its spacing
+    for (int i = 0; i < 20; ++i) coarse.push_back({0.3 + (i + 0.5) * D, (j + 0.5) * D});
+  auto normals = [](const std::vector<Vec2>& X, double s) {
+    return reference_surface_normals(X, std::vector<double>(X.size(), s * s),
+                                     Kernel(KernelType::WendlandC2, 1.3 * s));
+  };
+  const std::vector<Vec2> nf = normals(fine, d), nc = normals(coarse, D);
+  std::vector<Vec2> X = fine, n = nf;
+  X.insert(X.end(), coarse.begin(), coarse.end());
+  n.insert(n.end(), nc.begin(), nc.end());
+  std::vector<double> spacing(fine.size(), d);
+  spacing.resize(X.size(), D);
+
+  const std::vector<GhostSpec> g = plan_ghost_layers(X, n, spacing, support, cell);
+  // The parts lie apart, so the body's plan is the union of each part's own plan.
+  std::vector<GhostSpec> expected = plan_ghost_layers(fine, nf, d, support, cell);
+  for (GhostSpec s : plan_ghost_layers(coarse, nc, D, support, cell)) {
+    s.parent += static_cast<std::uint32_t>(fine.size());
+    expected.push_back(s);
+  }
+  ASSERT_FALSE(expected.empty());
+  ASSERT_EQ(g.size(), expected.size());
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    EXPECT_EQ(g[k].parent, expected[k].parent);
+    EXPECT_EQ(g[k].depth, expected[k].depth);
+    EXPECT_EQ(g[k].weight, expected[k].weight);
+  }
+  // The thick coarse block needs no ghosts; the thin fine skin gets them.
+  std::size_t coarse_ghosts = 0;
+  for (const GhostSpec& s : g) coarse_ghosts += s.parent >= fine.size();
+  EXPECT_EQ(coarse_ghosts, 0u);
+  EXPECT_GE(g.size(), fine.size());
+}
+
 namespace {
 
 // A three-layer plate as contact particles: top normals up, bottom down, middle zero.
