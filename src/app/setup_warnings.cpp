@@ -16,9 +16,14 @@ namespace {
 constexpr double kUnstableSpacingRatio = 3.0;
 constexpr double kStableHOverDxNextToFineBodies = 1.5;
 
-// The finest particle spacing of a body as the case gives it.
+// The finest particle spacing of a body as the case gives it: a fuselage's finest part
+// (app/case_builder gives the body that spacing), else the body's dx.
 double finest_body_spacing(const BodyConfig& b) {
-  return b.dx;
+  if (b.shape.type != "fuselage") return b.dx;
+  const FuselageShape& f = b.shape.fuselage;
+  double d = f.skin_spacing();
+  if (f.floor.present) d = std::min(d, f.floor_spacing());
+  return d;
 }
 
 void warn_fine_bodies_at_small_h(const CaseConfig& cfg, std::vector<std::string>& out) {

@@ -4,6 +4,17 @@
 
 namespace slamsph {
 
+namespace {
+
+// Each particle's own spacing (a body of parts: SolidBody::spacing; ghosts are planned and
+// placed at the parent's spacing, coupling/ghost_layers.h), the body's dx if none is set.
+std::vector<double> particle_spacing(const SolidBody& body) {
+  if (body.spacing.size() == body.size()) return body.spacing;
+  return std::vector<double>(body.size(), body.dx);
+}
+
+}  // namespace
+
 ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
                                   std::vector<std::vector<Vec2>> ref_normals, double support,
                                   double fluid_dx) {
@@ -12,8 +23,8 @@ ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
   l.offset.assign(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) l.offset[b + 1] = l.offset[b] + bodies[b].size();
   for (std::size_t b = 0; b < bodies.size(); ++b)
-    for (const GhostSpec& g :
-         plan_ghost_layers(bodies[b].X, l.ref_normals[b], bodies[b].dx, support, 0.5 * fluid_dx))
+    for (const GhostSpec& g : plan_ghost_layers(
+             bodies[b].X, l.ref_normals[b], particle_spacing(bodies[b]), support, 0.5 * fluid_dx))
       l.ghosts.push_back({static_cast<std::uint32_t>(b), g});
   return l;
 }
@@ -66,7 +77,8 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
     const std::size_t parent = layout.offset[gh.body] + gh.spec.parent;
     const Vec2 n = contact.normal[parent];
     contact.anchor[c] = contact.x[parent];
-    contact.x[c] = contact.x[parent] - (gh.spec.depth * body.dx) * n;
+    const double d = body.spacing.empty() ? body.dx : body.spacing[gh.spec.parent];
+    contact.x[c] = contact.x[parent] - (gh.spec.depth * d) * n;
     contact.v[c] = contact.v[parent];
     contact.a[c] = contact.a[parent];
     contact.volume[c] = gh.spec.weight * contact.volume[parent];

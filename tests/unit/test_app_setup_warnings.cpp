@@ -48,3 +48,20 @@ TEST(SetupWarnings, FlagsWaterNextToABodyThreeTimesFinerAtSmallH) {
   cfg.numerics.gravity = {0.0, 0.0};  // no pressure at rest
   EXPECT_TRUE(setup_warnings(cfg).empty());
 }
+
+// A fuselage's finest spacing is its skin's (thickness / layers), not the body dx key.
+TEST(SetupWarnings, FuselageSkinSpacingSetsTheRatio) {
+  CaseConfig cfg =
+      load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/fuselage/skin_cylinder.toml");
+  ASSERT_EQ(cfg.bodies.back().shape.type, "fuselage");
+  const FuselageShape& f = cfg.bodies.back().shape.fuselage;
+  cfg.numerics.h_over_dx = 1.38;
+  cfg.numerics.dx = 2.0 * f.skin_spacing();  // ratio 2: no warning
+  for (const std::string& s : setup_warnings(cfg))
+    EXPECT_EQ(s.find("finer than the water"), std::string::npos) << s;
+  cfg.numerics.dx = 4.0 * f.skin_spacing();  // ratio 4
+  bool warned = false;
+  for (const std::string& s : setup_warnings(cfg))
+    warned = warned || s.find("is 4 times finer than the water") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
