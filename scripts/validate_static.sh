@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Static plane-strain structures against CalculiX (issue 10 item 6; docs/validation.md §5):
-# the T-joint in three-point bending and the ring under diametral compression, at several
-# layer counts, against tests/verification/data/ccx_static.csv. With --ccx the reference is
+# the T-joint in three-point bending and with its web bent sideways, the plain ring and the
+# stiffened ring (fuselage builder) under diametral compression, at several layer counts, against tests/verification/data/ccx_static.csv. With --ccx the reference is
 # first regenerated with scripts/calculix/static_cases.py (needs calculix-ccx) into
 # OUT/ccx_static.csv and compared with the stored one. Runs resume (OUT/runs.csv).
 # Usage: scripts/validate_static.sh [OUT=results/static] [--ccx]
@@ -18,7 +18,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build --target test_app_static_structures -j"$(nproc)" >/dev/null
 runs="$out/runs.csv"
 [ -f "$runs" ] || echo "case,layers,particles,q1,sph1,ccx1,q2,sph2,ccx2,seconds" >"$runs"
-for c in ${STATIC_CASES:-t_joint:4 t_joint:6 t_joint:8 t_joint:12 t_joint_lateral:4 t_joint_lateral:6 t_joint_lateral:8 t_joint_lateral:12 ring:2 ring:3 ring:4 ring:6}; do
+for c in ${STATIC_CASES:-t_joint:4 t_joint:6 t_joint:8 t_joint:12 t_joint_lateral:4 t_joint_lateral:6 t_joint_lateral:8 t_joint_lateral:12 ring:2 ring:3 ring:4 ring:6 stiffened_ring:2 stiffened_ring:4}; do
   IFS=: read -r name L <<<"$c"
   if grep -q "^$name,$L," "$runs"; then continue; fi
   SLAMSPH_STATIC_CASE=$name SLAMSPH_STATIC_LAYERS=$L ./build/tests/test_app_static_structures \
