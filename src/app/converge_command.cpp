@@ -175,7 +175,11 @@ int run_converge(ConvergeRequest& r) {
       const double f1 = metrics[i1].*mt.field, f2 = metrics[i2].*mt.field,
                    f3 = metrics[i3].*mt.field;
       const GridConvergence g = grid_convergence(h[i1], h[i2], h[i3], f1, f2, f3);
-      const std::string kind = convergence_kind_name(g.kind);
+      std::string kind = convergence_kind_name(g.kind);
+      // Roache: an observed order far from the scheme's (1-2 here) means the three runs are
+      // not in the asymptotic range (or the metric is quantised, e.g. by the time step).
+      if (g.kind == ConvergenceKind::Monotone && (g.order < 0.5 || g.order > 4.0))
+        kind += " (p outside 0.5-4: not asymptotic)";
       md << "| " << mt.name << " [" << mt.unit << "] | " << metric_text(h[i1]) << ", "
          << metric_text(h[i2]) << ", " << metric_text(h[i3]) << " | " << metric_text(f1) << ", "
          << metric_text(f2) << ", " << metric_text(f3) << " | " << metric_text(g.ratio) << " | "
