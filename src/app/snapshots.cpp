@@ -103,9 +103,10 @@ void SnapshotWriter::write(const FsiStepper& st, std::size_t index) {
     for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
       const SolidBody& body = sys.bodies[b];
       const bool el = body.is_elastic() && body.F.size() == body.size();
-      const double r = 0.5 * cfg_.bodies[b].dx;
+      const bool own = body.spacing.size() == body.size();  // parts of their own spacing
       for (std::size_t i = 0; i < body.size(); ++i) {
         if (!inside(view, body.x[i])) continue;
+        const double r = 0.5 * (own ? body.spacing[i] : cfg_.bodies[b].dx);
         const double e = el ? equivalent_strain(green_lagrange(body.F[i])) : 0.0;
         emax = std::max(emax, e);
         f << num(body.x[i].x) << ',' << num(body.x[i].y) << ',' << (el ? 1 : 2) << ',' << num(e)
@@ -167,15 +168,28 @@ void SnapshotWriter::write_skin_profile(const FsiStepper& st, std::size_t index)
     if (sys.bodies[b].name == cfg_.output.skin_profile) body = &sys.bodies[b], bc = &cfg_.bodies[b];
   if (!body || body->P.size() != body->size()) return;
   const ShapeConfig& sh = bc->shape;
-  const double r_mid = 0.5 * (sh.inner_radius + sh.outer_radius);
-  const double half_layer = 0.5 * (sh.outer_radius - sh.inner_radius) / std::max(1, sh.layers);
+  // The skin: a ring, or a fuselage's part "skin" (its stringers, floor and columns are not
+  // on the skin's mid-surface).
+  double r_out = sh.outer_radius, r_in = sh.inner_radius;
+  int layers = sh.layers;
+  if (sh.type == "fuselage") {
+    r_out = 0.5 * sh.fuselage.diameter;
+    r_in = r_out - sh.fuselage.skin_thickness;
+    layers = sh.fuselage.skin_layers;
+  }
+  auto on_skin = [&](std::size_t i) {
+    if (body->part.size() != body->size() || body->part[i] >= body->part_names.size()) return true;
+    return sh.type != "fuselage" || body->part_names[body->part[i]] == "skin";
+  };
+  const double r_mid = 0.5 * (r_in + r_out);
+  const double half_layer = 0.5 * (r_out - r_in) / std::max(1, layers);
   struct Point {
     double angle, pyy;
   };
   std::vector<Point> pts;
   for (std::size_t i = 0; i < body->size(); ++i) {
     const Vec2 d = body->X[i] - sh.centre;
-    if (std::abs(norm(d) - r_mid) > half_layer * (1.0 + 1e-6)) continue;
+    if (!on_skin(i) || std::abs(norm(d) - r_mid) > half_layer * (1.0 + 1e-6)) continue;
     double deg = std::atan2(d.x, -d.y) * 180.0 / std::numbers::pi;
     if (deg < 0.0) deg += 360.0;
     pts.push_back({deg, body->P[i].yy});

@@ -8,7 +8,8 @@
 //      view is `output.snapshot_view`, else the elastic bodies' bounding box at that time
 //      widened by half its size on each side (clipped to the domain).
 //  snapshots/skin_pyy_NN.csv, skin_pyy.png/.gp  with `output.skin_profile`: the first
-//      Piola–Kirchhoff stress P_yy of the ring's mid-surface particles against the angle
+//      Piola–Kirchhoff stress P_yy of the skin's mid-surface particles (a ring, or the part
+//      "skin" of a fuselage, r_out = diameter/2) against the angle
 //      θ, at every snapshot time in one plot (the paper's Fig. 25). Mid-surface: the
 //      particles whose reference radius lies within half a layer of (r_in + r_out)/2 — the
 //      middle layer for an odd layer count, the two middle layers (averaged at each angle of

@@ -776,11 +776,12 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     rr.bad(key, "unknown body" + (near.empty() ? "" : " (did you mean '" + near + "'?)"),
            "the name of a [[body]]", "\"" + name + "\"");
   };
-  if (auto sp = r->string("skin_profile", "the name of a ring-shaped elastic [[body]]")) {
+  if (auto sp = r->string("skin_profile", "the name of an elastic ring or fuselage [[body]]")) {
     const BodyConfig& b = known_body(*r, "skin_profile", *sp);
-    if (b.kind != "elastic" || b.shape.type != "ring")
-      r->bad("skin_profile", "the skin profile needs an elastic body of shape type 'ring'",
-             "the name of a ring-shaped elastic [[body]]",
+    if (b.kind != "elastic" || (b.shape.type != "ring" && b.shape.type != "fuselage"))
+      r->bad("skin_profile",
+             "the skin profile needs an elastic body of shape type 'ring' or 'fuselage'",
+             "the name of an elastic ring or fuselage [[body]]",
              "\"" + *sp + "\" (" + b.kind + ", " + b.shape.type + ")");
     if (o.snapshots.empty())
       r->bad("skin_profile", "the skin profile is written at the snapshot times",

@@ -320,7 +320,7 @@ TEST(IoCaseErrors, SnapshotsAndSkinProfile) {
   const std::string disc =
       replace_line(kBase, "[output]", "[output]\nsnapshots = [0.5]\nskin_profile = \"cyl\"");
   expect_error(disc, line_of(disc, "skin_profile"), "output.skin_profile",
-               "elastic body of shape type 'ring'");
+               "elastic body of shape type 'ring' or 'fuselage'");
   // The disc as a ring (its radius line dropped; a ring takes inner and outer radii).
   const std::string ringed = replace_line(
       replace_line(kBase, "type = \"disc\"",
