@@ -1,14 +1,29 @@
-// Solid step throughput: cases/oscillating_plate.toml (TL-SFPM, hourglass control, no
-// fluid) advanced by the driver, one solid step per Simulation::step(). Arguments:
-// particles through the plate height, threads. Items = solid particles x steps, so the
-// rate column reads solid particle-steps per second.
+// Solid step throughput. Items = solid particles x sub-steps, so the rate column reads solid
+// particle-steps per second.
+//  - BM_ElasticPlateStep: cases/oscillating_plate.toml (TL-SFPM, hourglass control, no
+//    fluid) advanced by the driver, one solid step per Simulation::step(). Arguments:
+//    particles through the plate height, threads.
+//  - BM_RingSubsteps: an aluminium ring skin (geometry/polar_lattice.h, radially aligned
+//    layers, TL-SFPM, SVK, artificial viscosity and hourglass control on) in free vibration
+//    of its n = 2 mode, advanced by advance_body over 20 stable steps per iteration (the
+//    sub-step loop alone, no fluid). Arguments: case (0: 2 layers, 2 514 particles, r 0.3 m;
+//    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads.
+// Callgrind: `valgrind --tool=callgrind --toggle-collect='slamsph::advance_body*'
+//   build/bench/bench_solid --benchmark_filter='BM_RingSubsteps/case:0/threads:1'
+//   --benchmark_min_time=0` counts the sub-step loop only (notes: instructions per
+//   particle-step = Ir / (particles x sub-steps)).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "app/simulation.h"
+#include "core/parallel.h"
+#include "geometry/polar_lattice.h"
 #include "io/case_file.h"
 #include "io/case_resolution.h"
+#include "solid/body_dynamics.h"
 
 using namespace slamsph;
 
@@ -30,6 +45,68 @@ BENCHMARK(BM_ElasticPlateStep)
     ->Args({48, 1})
     ->Args({48, 2})
     ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+// A 3 mm aluminium ring skin: mid radius and layers of each benchmark case.
+struct RingCase {
+  double r_mid;
+  int layers;
+};
+constexpr RingCase kRings[] = {{0.3, 2}, {0.3, 4}, {0.7958, 6}};
+
+SolidBody aluminium_ring(const RingCase& rc) {
+  const double t = 0.003;
+  const ParticleLattice lat = ring({0.0, 0.0}, rc.r_mid - 0.5 * t, rc.r_mid + 0.5 * t, rc.layers);
+  const double rho = 2700.0;
+  SolidBody b;
+  b.X = lat.x;
+  b.x = lat.x;
+  b.V0 = lat.volume;
+  b.layer = lat.layer;
+  for (double v : lat.volume) {
+    b.m.push_back(rho * v);
+    b.rho0.push_back(rho);
+  }
+  BodySetup cfg;
+  cfg.name = "ring";
+  cfg.dx = t / rc.layers;
+  cfg.gravity = false;
+  ElasticMaterialInput mat;
+  mat.name = "aluminium";
+  mat.density = rho;
+  mat.youngs_modulus = 70e9;
+  mat.poisson_ratio = 0.3;
+  mat.hourglass = 0.1;
+  cfg.material = mat;
+  setup_body(b, cfg);
+  // n = 2 ovalisation mode, 1 m/s radial amplitude: half the pairs approach (viscosity on).
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const double th = std::atan2(b.X[i].y, b.X[i].x);
+    const Vec2 er{std::cos(th), std::sin(th)};
+    b.v[i] = std::cos(2.0 * th) * er;
+  }
+  return b;
+}
+
+void BM_RingSubsteps(benchmark::State& st) {
+  SolidBody b = aluminium_ring(kRings[st.range(0)]);
+  const Executor exec(static_cast<int>(st.range(1)));
+  double t = 0.0;
+  long substeps = 0;
+  for (auto _ : st) {
+    const double dt = 20.0 * stable_time_step(b) * (1.0 - 1e-9);
+    advance_body(b, t, dt, {}, exec);
+    t += dt;
+    substeps += b.last_substeps;
+  }
+  st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
+  st.counters["particles"] = static_cast<double>(b.size());
+  st.counters["substeps"] = static_cast<double>(substeps);
+}
+BENCHMARK(BM_RingSubsteps)
+    ->ArgsProduct({{0, 1, 2}, {1, 2}})
+    ->ArgNames({"case", "threads"})
+    ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 }  // namespace
