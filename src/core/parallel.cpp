@@ -1,5 +1,6 @@
 #include "core/parallel.h"
 
+#include <omp.h>
 #include <sched.h>
 #include <unistd.h>
 
@@ -11,6 +12,19 @@
 namespace slamsph {
 
 Executor::Executor(int threads) : threads_(std::max(1, threads)) {}
+
+int Executor::team_rank() {
+  return omp_get_thread_num();
+}
+int Executor::team_size() {
+  return omp_get_num_threads();
+}
+
+void Team::barrier() const {
+  if (size_ < 2) return;
+  if (rank_ == 0) barriers_->fetch_add(1, std::memory_order_relaxed);
+#pragma omp barrier
+}
 
 int Executor::hardware_threads() {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

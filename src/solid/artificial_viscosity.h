@@ -19,8 +19,48 @@ namespace slamsph {
 class Executor;
 
 // Π_ij [Pa] for relative velocity vij = v_i − v_j and separation xij = x_i − x_j.
-double monaghan_pi(Vec2 vij, Vec2 xij, double h, double rho0_mean, double c, double alpha,
-                   double beta);
+inline double monaghan_pi(Vec2 vij, Vec2 xij, double h, double rho0_mean, double c, double alpha,
+                          double beta) {
+  const double vx = dot(vij, xij);
+  if (vx >= 0.0) return 0.0;
+  const double mu = h * vx / (norm2(xij) + 0.01 * h * h);
+  return rho0_mean * (-alpha * c * mu + beta * mu * mu);
+}
+
+// |c_ij| of pair k = (i, j), c_ij = ½(V0_i g_ij − V0_j g_ji): a reference quantity, so the
+// fused sub-step computes it once per pair (solid/elastic_substep.h).
+inline double viscous_pair_weight(const SolidBody& body, const SolidTopology& topo, std::size_t i,
+                                  std::uint32_t k) {
+  const std::uint32_t j = topo.pairs.index[k];
+  const Vec2 c = 0.5 * (body.V0[i] * topo.grad0[k] - body.V0[j] * topo.grad0[topo.pair_reverse[k]]);
+  return norm(c);
+}
+
+// Viscous force on particle i [N/m] at positions x and velocities v; adds i's heating rate
+// (half of each pair's dissipated power) to `heat` [W/m]. weight(k) is |c_ij| of pair k
+// (viscous_pair_weight, possibly precomputed). The caller skips this if α = β = 0.
+template <class Weight>
+inline Vec2 viscous_force_on(const SolidBody& body, const SolidTopology& topo,
+                             std::span<const Vec2> x, std::span<const Vec2> v, std::size_t i,
+                             Weight&& weight, double& heat) {
+  const SolidMaterial& mat = body.material;
+  Vec2 sum;
+  for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
+    const std::uint32_t j = topo.pairs.index[k];
+    const Vec2 xij = x[i] - x[j];
+    const Vec2 vij = v[i] - v[j];
+    // Symmetric pair smoothing length (solid_topology.h): body h for one spacing.
+    const double h = 0.5 * (topo.h[i] + topo.h[j]);
+    const double pi = monaghan_pi(vij, xij, h, 0.5 * (body.rho0[i] + body.rho0[j]), mat.sound_speed,
+                                  mat.av_alpha, mat.av_beta);
+    if (pi == 0.0) continue;
+    const double r = norm(xij);
+    const double s = pi * weight(k) / r;
+    sum += s * xij;
+    heat += -0.5 * s * dot(xij, vij);
+  }
+  return sum;
+}
 
 // Viscous force f (N/m) and heating rate q_i = ½ Σ_j (pair dissipation) [W/m] per particle
 // over the pairs of `topo`, from velocities v (spans of body.size()).

@@ -11,6 +11,7 @@
 #include "solid/artificial_viscosity.h"
 #include "solid/cantilever_mode.h"
 #include "solid/deformation_gradient.h"
+#include "solid/elastic_substep.h"
 #include "solid/hourglass_control.h"
 #include "solid/rigid_motion.h"
 #include "solid/stress_update.h"
@@ -76,48 +77,11 @@ void advance_elastic(SolidBody& body, double t, double dt, Vec2 gravity, const E
   const double h = dt / steps;
   body.last_substeps = steps;
   const Vec2 g = body.feels_gravity ? gravity : Vec2{};
-  ForceScratch s;
-  if (body.f_int.size() != n) internal_forces(body, body.v, exec, s);
-  std::vector<Vec2> fext(n), vhalf(n);
-  std::vector<Mat2> P_old;
-  exec.for_each(n, [&](std::size_t i) { fext[i] = body.f_fluid[i] + body.m[i] * g; });
-  auto accel = [&](std::size_t i) {
-    body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + fext[i]) / body.m[i];
-  };
-  exec.for_each(n, accel);
-  for (int step = 0; step < steps; ++step) {
-    exec.for_each(n, [&](std::size_t i) {
-      if (body.clamped[i]) {
-        vhalf[i] = Vec2{};
-        body.x[i] = body.X[i];
-        return;
-      }
-      vhalf[i] = body.v[i] + (0.5 * h) * body.a[i];
-      body.x[i] += h * vhalf[i];
-    });
-    P_old = body.P;
-    update_material(body, h, exec, s);
-    internal_forces(body, vhalf, exec, s);
-    exec.for_each(n, accel);
-    exec.for_each(n, [&](std::size_t i) {
-      body.v[i] = body.clamped[i] ? Vec2{} : vhalf[i] + (0.5 * h) * body.a[i];
-      // Internal energy (spec §3): de/dt = P : Ḟ / ρ0 (trapezoid in P) + viscous heating.
-      const Mat2 Fdot = reference_gradient(body.topology, vhalf, i);
-      const Mat2 Pm = 0.5 * (P_old[i] + body.P[i]);
-      body.e[i] += h * (ddot(Pm, Fdot) / body.rho0[i] + s.heat[i] / body.m[i]);
-    });
-    // Work bookkeeping: force at level n+1 times the synchronised velocity (exact kinetic
-    // energy change of the two half kicks around it); external force over the drift.
-    double diss = 0.0, hg = 0.0, ext = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      diss -= dot(body.f_av[i], body.v[i]);
-      hg -= dot(body.f_hg[i], body.v[i]);
-      ext += dot(fext[i], vhalf[i]);
-    }
-    body.dissipated += h * diss;
-    body.hourglass_work += h * hg;
-    body.external_work += h * ext;
+  if (body.f_int.size() != n) {
+    ForceScratch s;
+    internal_forces(body, body.v, exec, s);
   }
+  run_elastic_substeps(body, steps, h, g, exec);
 }
 
 }  // namespace

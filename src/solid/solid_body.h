@@ -16,6 +16,7 @@
 #include "solid/body_kind.h"
 #include "solid/materials/material_law_choice.h"
 #include "solid/solid_topology.h"
+#include "solid/substep_workspace.h"
 
 namespace slamsph {
 
@@ -89,6 +90,8 @@ struct SolidBody {
   // Reference pairs and gradient weights (solid/solid_topology.h), built at set-up from X;
   // the solid operators take it as an explicit argument.
   SolidTopology topology;
+
+  SubstepWorkspace substep;  // scratch of the fused sub-step (not state)
 
   SolidMaterial material;  // elastic bodies
   double cfl = 0.5;        // solid CFL number (spec §3), from NumericsConfig::solid_cfl

@@ -10,19 +10,9 @@ namespace {
 template <class Law>
 void update_with(const Law& law, SolidBody& body, std::span<const Mat2> F_old, double dt,
                  const Executor& exec) {
-  constexpr std::size_t nh = Law::kHistory.size();
-  if constexpr (nh == 0) {
-    exec.for_each(body.size(),
-                  [&](std::size_t i) { body.P[i] = law.update(F_old[i], body.F[i], dt, {}); });
-  } else {
-    auto& v = body.history.values;
-    exec.for_each(body.size(), [&](std::size_t i) {
-      std::array<double, nh> h;
-      for (std::size_t k = 0; k < nh; ++k) h[k] = v[k][i];
-      body.P[i] = law.update(F_old[i], body.F[i], dt, h);
-      for (std::size_t k = 0; k < nh; ++k) v[k][i] = h[k];
-    });
-  }
+  exec.for_each(body.size(), [&](std::size_t i) {
+    body.P[i] = commit_stress_at(law, body.history, F_old[i], body.F[i], dt, i);
+  });
 }
 
 // The committed history of particle i, gathered (laws read at most a few fields).

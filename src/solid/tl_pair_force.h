@@ -18,6 +18,18 @@ namespace slamsph {
 
 class Executor;
 
+// Stress force on particle i from body.P over the pairs of `topo` [N/m].
+inline Vec2 stress_force_on(const SolidBody& body, const SolidTopology& topo, std::size_t i) {
+  Vec2 sum;
+  const Mat2 Pi = body.V0[i] * body.P[i];
+  for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
+    const std::uint32_t j = topo.pairs.index[k];
+    sum += Pi * topo.grad0[k];
+    sum -= body.V0[j] * (body.P[j] * topo.grad0[topo.pair_reverse[k]]);
+  }
+  return sum;
+}
+
 // Stress force on every particle from body.P over the pairs of `topo` [N/m].
 void compute_stress_forces(const SolidBody& body, const SolidTopology& topo, const Executor& exec,
                            std::span<Vec2> f);
