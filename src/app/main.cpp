@@ -15,6 +15,7 @@
 
 #include "app/checkpoint.h"
 #include "app/converge_command.h"
+#include "app/cost_model.h"
 #include "app/output_folder.h"
 #include "app/overlay_command.h"
 #include "app/plot_command.h"
@@ -105,7 +106,7 @@ int run_or_check(const std::string& cmd, Request& req) {
     warn(sim);
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
-    std::printf(")\n");
+    std::printf(")\n%s", describe_cost(predict_cost(sim)).c_str());
     return 0;
   }
   opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
