@@ -59,6 +59,9 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     if (!bodies.empty()) names.insert(names.end(), {"forces.csv", "bodies.csv"});
     if (cfg_.output.vtk) names.insert(names.end(), {"vtk/", "fields.pvd"});
     if (opt_.checkpoint_interval > 0.0) names.push_back("checkpoints/");
+    // Listed before the snapshot writer creates it, so that a run killed before its next
+    // flush still has the folder (and so its PNGs) in its manifest.
+    if (!cfg_.output.snapshots.empty()) names.push_back("snapshots/");
     if (failure_log_.active()) names.push_back("failure.csv");
     folder_->record(names);
     RunStatus running;
