@@ -32,6 +32,7 @@ Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiSteppe
   impulse_.assign(nb, Vec2{});
   peak_mag_.assign(nb, 0.0);
   peak_time_.assign(nb, 0.0);
+  part_peaks_.reset(st_.system().bodies);  // before a checkpoint restores its state
 }
 
 Recorder::~Recorder() = default;
@@ -285,6 +286,7 @@ void Recorder::before_step() {
 
 void Recorder::after_step() {
   record_loads(st_.last_step_limit().dt);
+  part_peaks_.update(st_.system().bodies, st_.time());
   for (const std::vector<double>& row : failure_log_.scan(st_.system().bodies, st_.time()))
     if (failure_csv_) failure_csv_->row(row);
 }
@@ -367,6 +369,7 @@ void Recorder::write_summary(const RunStatus& status) const {
   }
   summary.set("bodies", loads);
   if (failure_log_.active()) summary.set("failures", failure_log_.summary(sys.bodies));
+  if (!sys.bodies.empty() && st_.steps() > 0) summary.set("parts", part_peaks_.summary(sys.bodies));
   if (energy_csv_) {
     // energy.csv's residual against its largest term (README "Energy balance").
     JsonObject en;

@@ -15,6 +15,7 @@
 
 #include "app/failure_log.h"
 #include "app/fsi_stepper.h"
+#include "app/part_peaks.h"
 #include "app/probes.h"
 #include "app/run_options.h"
 #include "io/case_config.h"
@@ -90,6 +91,7 @@ class Recorder {
     f("impulse", s.impulse_);
     f("wall_seconds_before", s.wall_before_);
     f("first_failure", s.failure_log_.first);
+    f("part_peaks", s.part_peaks_.state);
     f("energy_initial", s.energy0_);
     f("energy_largest_term", s.energy_scale_);
     f("energy_max_residual", s.energy_max_residual_);
@@ -115,6 +117,7 @@ class Recorder {
   std::unique_ptr<VtkSeries> vtk_;
   std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_, energy_csv_;
   FailureLog failure_log_;                  // failed particles (app/failure_log.h)
+  PartPeaks part_peaks_;                    // peak strain per part (app/part_peaks.h)
   std::unique_ptr<CsvWriter> failure_csv_;  // failure.csv, when a law can fail
 
   double vtk_dt_ = 0.0, probe_dt_ = 0.0;
