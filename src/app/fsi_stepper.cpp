@@ -88,6 +88,9 @@ void FsiStepper::step() {
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
   solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity, exec_);
+  // A body that blew up during its sub-steps is reported here, as a divergence with the
+  // particle, before the neighbour rebuild in evaluate_rates() meets non-finite positions.
+  check_bodies(time_ + dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], dt);
   time_ += dt;
@@ -133,6 +136,11 @@ void FsiStepper::check_state() const {
       throw DivergenceError(os.str());
     }
   }
+  check_bodies(time_);
+}
+
+void FsiStepper::check_bodies(double time) const {
+  const Box& d = prm_.domain;
   for (const SolidBody& b : sys_.bodies) {
     for (std::size_t i = 0; i < b.size(); ++i) {
       const Vec2 x = b.x[i];
@@ -140,7 +148,7 @@ void FsiStepper::check_state() const {
           std::isfinite(b.v[i].y) && inside(d, x))
         continue;
       std::ostringstream os;
-      os << "body '" << b.name << "' particle " << i << " at t = " << time_ << " s: "
+      os << "body '" << b.name << "' particle " << i << " at t = " << time << " s: "
          << (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(b.v[i].x) &&
                      std::isfinite(b.v[i].y)
                  ? "left the domain"

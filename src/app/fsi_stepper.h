@@ -115,6 +115,8 @@ class FsiStepper {
  private:
   void evaluate_rates();
   void check_state() const;
+  // Every body particle finite and inside the domain at `time`; else DivergenceError.
+  void check_bodies(double time) const;
 
   FsiParams prm_;
   FsiSystem sys_;
