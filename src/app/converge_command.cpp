@@ -200,10 +200,7 @@ int run_converge(ConvergeRequest& r) {
   if (!r.opt.quiet)
     std::fprintf(stderr, "converge: %s; wrote %s/converge.csv, converge.md, converge_gci.csv\n",
                  plot.c_str(), r.opt.out_dir.c_str());
-  if (const int sig = stop_signal()) return 128 + sig;
-  for (const RunMetrics& m : metrics)
-    if (m.status == "diverged") return 3;
-  return 0;
+  return study_exit_code(metrics);
 }
 
 }  // namespace
@@ -234,20 +231,7 @@ CLI::App* add_converge_command(CLI::App& app, int& exit_code) {
   sub->add_option("-o,--out", req->opt.out_dir,
                   "Study folder (default: results/<case name>_converge)")
       ->type_name("DIR");
-  sub->add_option("--body", req->opt.body,
-                  "Body whose force, strain and keel are compared (default: the first body "
-                  "that is not rigid_fixed)")
-      ->type_name("NAME");
-  sub->add_option("-t,--threads", req->opt.threads, "Threads per run (default as for run)")
-      ->check(CLI::Range(1, Executor::kMaxThreads))
-      ->type_name("N");
-  sub->add_option("--end-time", req->opt.end_time,
-                  "Simulated end time of every run in s (default: the case's)")
-      ->check(CLI::PositiveNumber)
-      ->type_name("T");
-  sub->add_flag("--overwrite", req->opt.overwrite,
-                "Replace earlier runs in the variants' folders (default: refuse them, exit 2)");
-  sub->add_flag("-q,--quiet", req->opt.quiet, "Print nothing but errors");
+  add_study_options(*sub, req->opt, "compared", "run");
   sub->callback([req, &exit_code] { exit_code = run_converge(*req); });
   return sub;
 }

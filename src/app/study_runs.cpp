@@ -1,5 +1,6 @@
 #include "app/study_runs.h"
 
+#include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "app/simulation.h"
 #include "app/stop_signal.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 #include "io/csv_writer.h"
@@ -294,6 +296,35 @@ std::string write_study_tables(const StudyOptions& opt, const std::string& stem,
   plot_overlay(opt.out_dir, stem + "_force", curves, title + ": vertical force on the body",
                "Fy [N/m]", "gnuplot", message);
   return message;
+}
+
+}  // namespace slamsph
+
+namespace slamsph {
+
+void add_study_options(CLI::App& sub, StudyOptions& opt, const std::string& use,
+                       const std::string& run) {
+  sub.add_option("--body", opt.body,
+                 "Body whose force, strain and keel are " + use +
+                     " (default: the first body that is not rigid_fixed)")
+      ->type_name("NAME");
+  sub.add_option("-t,--threads", opt.threads, "Threads per run (default as for run)")
+      ->check(CLI::Range(1, Executor::kMaxThreads))
+      ->type_name("N");
+  sub.add_option("--end-time", opt.end_time,
+                 "Simulated end time of every " + run + " in s (default: the case's)")
+      ->check(CLI::PositiveNumber)
+      ->type_name("T");
+  sub.add_flag("--overwrite", opt.overwrite,
+               "Replace earlier runs in the variants' folders (default: refuse them, exit 2)");
+  sub.add_flag("-q,--quiet", opt.quiet, "Print nothing but errors");
+}
+
+int study_exit_code(const std::vector<RunMetrics>& metrics) {
+  if (const int sig = stop_signal()) return 128 + sig;
+  for (const RunMetrics& m : metrics)
+    if (m.status == "diverged") return 3;
+  return 0;
 }
 
 }  // namespace slamsph

@@ -9,6 +9,10 @@
 #include "app/run_metrics.h"
 #include "io/case_config.h"
 
+namespace CLI {
+class App;
+}
+
 namespace slamsph {
 
 // One run of a study.
@@ -60,6 +64,15 @@ std::vector<RunMetrics> run_study(const StudyOptions& opt,
 // each variant alone (`slamsph run CASE --set ... --out DIR`).
 void write_study_rerun(const StudyOptions& opt, const std::string& name, const std::string& command,
                        const std::vector<StudyVariant>& variants);
+
+// The options every study command takes: --body, --threads, --end-time, --overwrite and
+// --quiet. `use` says what the study does with the body ("tabulated", "compared") and `run`
+// what one run is called in the help ("variant", "run").
+void add_study_options(CLI::App& sub, StudyOptions& opt, const std::string& use,
+                       const std::string& run);
+
+// A study's exit code: 128 + the signal that stopped it, else 3 if a run diverged, else 0.
+int study_exit_code(const std::vector<RunMetrics>& metrics);
 
 // A POSIX-shell-quoted word (for command files).
 std::string shell_quote(const std::string& s);
