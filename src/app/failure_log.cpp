@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "app/keel_angle.h"
 #include "io/json_writer.h"
 #include "solid/materials/material_law_choice.h"
 
@@ -74,8 +75,8 @@ std::vector<std::vector<double>> FailureLog::scan(const std::vector<SolidBody>& 
       if (seen_[b][i] || f[i] < 0.5) continue;
       seen_[b][i] = 1;
       const Vec2 r = body.X[i] - centre_[b];
-      const double angle = std::atan2(r.x, -r.y) * 180.0 / std::numbers::pi;
-      const double part = body.topology.part.empty() ? 0.0 : double(body.topology.part[i]);
+      const double angle = keel_angle_deg(r);
+      const double part = body.part.size() == body.size() ? double(body.part[i]) : 0.0;
       rows.push_back({time, double(b), double(i), body.x[i].x, body.x[i].y, part, angle,
                       value_of(body, "triaxiality", i), value_of(body, "plastic_strain_rate", i),
                       value_of(body, "equivalent_plastic_strain", i),

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "app/keel_angle.h"
 #include "io/plot.h"
 #include "solid/materials/st_venant_kirchhoff.h"
 
@@ -190,7 +191,7 @@ void SnapshotWriter::write_skin_profile(const FsiStepper& st, std::size_t index)
   for (std::size_t i = 0; i < body->size(); ++i) {
     const Vec2 d = body->X[i] - sh.centre;
     if (!on_skin(i) || std::abs(norm(d) - r_mid) > half_layer * (1.0 + 1e-6)) continue;
-    double deg = std::atan2(d.x, -d.y) * 180.0 / std::numbers::pi;
+    double deg = keel_angle_deg(d);
     if (deg < 0.0) deg += 360.0;
     pts.push_back({deg, body->P[i].yy});
   }
