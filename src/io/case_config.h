@@ -136,7 +136,7 @@ struct OutputConfig {
   bool vtk = true;
   std::string vtk_precision = "float32";  // real fields in the .vtp files: "float32", "float64"
   std::string vtk_compression = "none";   // "none" or "zlib"
-  std::string plot;                       // "" or "cylinder_entry", "dam_break", "plate", "gate"
+  std::string plot;  // "" or "cylinder_entry", "dam_break", "plate", "gate", "structure"
   std::vector<ProbeConfig> probes;
   // Times [s] of field snapshots (snapshots/*.png, app/snapshots.h), increasing, in
   // (0, end_time]; each is taken at the first fluid step at or after it.

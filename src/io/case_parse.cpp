@@ -44,7 +44,8 @@ const std::vector<std::string> kProbeKinds{
     "pressure",          "surge_front", "water_height",      "max_speed",       "body_pressure",
     "body_displacement", "body_strain", "body_stress",       "body_max_strain", "keel_deflection",
     "ovalisation",       "shortening",  "midspan_deflection"};
-const std::vector<std::string> kPlots{"", "cylinder_entry", "dam_break", "plate", "gate"};
+const std::vector<std::string> kPlots{"",      "cylinder_entry", "dam_break",
+                                      "plate", "gate",           "structure"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
 const std::vector<std::string> kModels{"svk", "j2_linear_hardening", "johnson_cook"};
 const std::vector<std::string> kFailures{"none", "johnson_cook", "critical_plastic_strain"};

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -452,6 +453,91 @@ int plot_gate(const std::string& out_dir, const PlotParams& p, const std::string
   return kOk;
 }
 
+// Probe columns of one kind for the structure plot: unit suffix `unit`, leaving out the
+// reference positions of a body_max_strain probe ("_X [m]", "_Y [m]") and the leak count.
+std::vector<int> unit_columns(const CsvTable& t, const std::string& unit) {
+  std::vector<int> cols;
+  for (std::size_t i = 1; i < t.headers.size(); ++i) {
+    const std::string& h = t.headers[i];
+    if (!ends_with(h, unit) || ends_with(h, "_X [m]") || ends_with(h, "_Y [m]") ||
+        h.rfind("leaked_particles", 0) == 0)
+      continue;
+    cols.push_back(static_cast<int>(i));
+  }
+  return cols;
+}
+
+// "structure": the studied body's vertical fluid force (slamming_force.png) and its
+// structural probes (structure_response.png: displacements in mm, strains, stresses in MPa,
+// one panel each), against time in ms. What a fuselage study compares between runs
+// (docs/studies.md); the force is the water's on the body, total (pressure + viscous).
+int plot_structure(const std::string& out_dir, const PlotParams& p, const std::string& gnuplot,
+                   std::string& message) {
+  CsvTable f;
+  if (!load(out_dir, "forces.csv", f, message)) return kMissing;
+  const std::string fy = p.column.empty() ? p.body + " Fy [N/m]" : p.column;
+  const int c = f.find(fy);
+  if (c < 0) {
+    message = "plot: column \"" + fy + "\" not in " + out_dir +
+              "/forces.csv (columns: " + list_headers(f) + ")";
+    return kMissing;
+  }
+  std::string s = preamble("slamming_force.png");
+  s += set_title("Slamming force on " + p.body + " (water on the body, vertical)", p);
+  s += "set xlabel 'time [ms]'\nset ylabel 'F_y [kN/m]'\nset autoscale xfix\n";
+  s += "plot 'forces.csv' skip 1 using (1e3*$1):(1e-3*column(" + std::to_string(c + 1) +
+       ")) with lines lw 1.5 title " + gp_str(fy) + "\n";
+  int rc = run_script(out_dir, "slamming_force", s, gnuplot, message);
+  if (rc != kOk) return rc;
+  const Peak pk = find_peak(f.columns[0], f.columns[static_cast<std::size_t>(c)], true);
+  message = "wrote slamming_force.png (peak " + snum(pk.value) + " N/m at " + snum(pk.time) + " s)";
+
+  CsvTable t;
+  std::string why;
+  if (!fs::exists(out_dir + "/probes.csv") || !load(out_dir, "probes.csv", t, why)) return kOk;
+  struct Panel {
+    const char* unit;
+    const char* label;
+    double scale;
+  };
+  const Panel panels[] = {{"[m]", "displacement [mm]", 1e3},
+                          {"[-]", "strain [-]", 1.0},
+                          {"[Pa]", "stress [MPa]", 1e-6}};
+  std::vector<std::pair<const Panel*, std::vector<int>>> used;
+  for (const Panel& pn : panels) {
+    std::vector<int> cols = unit_columns(t, pn.unit);
+    if (!cols.empty()) used.emplace_back(&pn, std::move(cols));
+  }
+  if (used.empty()) return kOk;
+  s = preamble("structure_response.png", 1000, 330 * static_cast<int>(used.size()) + 60);
+  s += "set multiplot layout " + std::to_string(used.size()) + ",1 title " +
+       gp_str("Structural response of " + p.body + (p.note.empty() ? "" : " - " + p.note)) +
+       "\nset key outside right top box opaque\nset lmargin 12\nset rmargin 36\nset autoscale "
+       "xfix\n";
+  for (std::size_t k = 0; k < used.size(); ++k) {
+    s += "set xlabel " + gp_str(k + 1 == used.size() ? "time [ms]" : "") + "\nset ylabel " +
+         gp_str(used[k].first->label) + "\nplot ";
+    const std::vector<int>& cols = used[k].second;
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      const std::string& h = t.headers[static_cast<std::size_t>(cols[i])];  // "<name> <unit>"
+      if (i) s += ", \\\n     ";
+      s += "'probes.csv' skip 1 using (1e3*$1):(" + num(used[k].first->scale) + "*column(" +
+           std::to_string(cols[i] + 1) + ")) with lines lw 1.5 title " +
+           gp_str(h.substr(0, h.size() - std::strlen(used[k].first->unit) - 1));
+    }
+    s += "\n";
+  }
+  s += "unset multiplot\n";
+  std::string m2;
+  rc = run_script(out_dir, "structure_response", s, gnuplot, m2);
+  if (rc != kOk) {
+    message = m2;
+    return rc;
+  }
+  message += ", structure_response.png";
+  return kOk;
+}
+
 }  // namespace
 
 std::string gnuplot_preamble(const std::string& png, int width, int height) {
@@ -497,9 +583,10 @@ int plot_results(const std::string& out_dir, const std::string& kind, const Plot
     message = "plot: no plot requested";
     return kOk;
   }
-  if (kind != "cylinder_entry" && kind != "dam_break" && kind != "plate" && kind != "gate") {
-    message =
-        "plot: unknown kind \"" + kind + "\" (expected cylinder_entry, dam_break, plate or gate)";
+  if (kind != "cylinder_entry" && kind != "dam_break" && kind != "plate" && kind != "gate" &&
+      kind != "structure") {
+    message = "plot: unknown kind \"" + kind +
+              "\" (expected cylinder_entry, dam_break, plate, gate or structure)";
     return kMissing;
   }
   const std::string gp = find_gnuplot(p.gnuplot);
@@ -514,6 +601,7 @@ int plot_results(const std::string& out_dir, const std::string& kind, const Plot
     if (kind == "cylinder_entry") return plot_cylinder_entry(out_dir, p, gp, message);
     if (kind == "dam_break") return plot_dam_break(out_dir, p, gp, message);
     if (kind == "plate") return plot_plate(out_dir, p, gp, message);
+    if (kind == "structure") return plot_structure(out_dir, p, gp, message);
     return plot_gate(out_dir, p, gp, message);
   } catch (const std::exception& e) {
     message = std::string("plot ") + kind + ": " + e.what();

@@ -23,6 +23,10 @@
 //      p.plate_omega and p.plate_amplitude are set.
 //  "gate": tip-displacement columns as for "plate" → gate_tip.png in mm with the
 //      Antoci et al. (2007) experimental peaks marked.
+//  "structure": forces.csv column "<body> Fy [N/m]" (p.body, or p.column) → slamming_force.png
+//      (kN/m against ms) and, from probes.csv, structure_response.png: one panel per unit —
+//      displacements [m] in mm, strains [-], stresses [Pa] in MPa — with the leak count and a
+//      body_max_strain probe's reference position (_X, _Y) left out (fuselage studies).
 // The first CSV column is the time [s].
 //
 // Return codes: 0 success; 1 gnuplot not found; 2 missing file, column or parameter;

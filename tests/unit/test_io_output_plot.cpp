@@ -99,6 +99,45 @@ TEST(IoOutputPlot, MissingColumnFileAndGnuplotAreReported) {
   EXPECT_FALSE(fs::exists(dir / "slamming_force.png"));
 }
 
+// "structure" (fuselage studies): the studied body's Fy and every structural probe column,
+// by unit (displacements, strains, stresses), with the leak count and the reference
+// positions of a body_max_strain probe left out of the panels.
+TEST(IoOutputPlot, StructureDrawsForceAndProbePanels) {
+  SKIP_WITHOUT_GNUPLOT();
+  const fs::path dir = fresh_dir("plot_structure");
+  write_forces(dir);
+  {
+    CsvWriter w((dir / "probes.csv").string(),
+                {"time [s]", "keel [m]", "emax [-]", "emax_X [m]", "emax_Y [m]",
+                 "keel_stress_von_mises [Pa]", "leaked_particles [-]"});
+    for (int i = 0; i <= 100; ++i) {
+      const double t = 3e-4 * i;
+      w.row({t, 0.02 * std::sin(100 * t), 1e-3 * t, 1.5, 2.0, 4e7 * t, 0.0});
+    }
+  }
+  PlotParams p;
+  p.body = "cylinder";
+  std::string msg;
+  ASSERT_EQ(plot_results(dir.string(), "structure", p, msg), 0) << msg;
+  EXPECT_TRUE(is_png(dir / "slamming_force.png"));
+  EXPECT_TRUE(is_png(dir / "structure_response.png"));
+  // Peak of the synthetic Campbell–Weynberg force (as in CylinderEntryWritesPngs).
+  EXPECT_NE(msg.find("peak 2795.9 N/m at 0.001 s"), std::string::npos) << msg;
+  std::ifstream in(dir / "structure_response.gp");
+  std::stringstream gp;
+  gp << in.rdbuf();
+  const std::string script = gp.str();
+  EXPECT_NE(script.find("layout 3,1"), std::string::npos) << script;
+  EXPECT_NE(script.find("title 'keel'"), std::string::npos) << script;
+  EXPECT_NE(script.find("(1e-06*column(6))"), std::string::npos) << script;  // Pa -> MPa
+  EXPECT_EQ(script.find("emax_X"), std::string::npos) << script;
+  EXPECT_EQ(script.find("leaked"), std::string::npos) << script;
+  // A body the forces do not name is reported, not drawn.
+  p.body = "nobody";
+  EXPECT_EQ(plot_results(dir.string(), "structure", p, msg), 2);
+  EXPECT_NE(msg.find("nobody Fy [N/m]"), std::string::npos) << msg;
+}
+
 TEST(IoOutputPlot, DamBreakPlateGateAndGeneric) {
   SKIP_WITHOUT_GNUPLOT();
   const fs::path dir = fresh_dir("plot_other");

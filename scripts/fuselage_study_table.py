@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Table of the fuselage study runs (scripts/validate_fuselage_studies.sh; docs/studies.md §2).
+
+Reads every run folder under OUT (summary.json, forces.csv, probes.csv) and prints one
+Markdown row per run: particles, fluid steps, solid sub-steps per fluid step, wall time and
+threads, status, leaked water particles, the peak vertical force and its time, the vertical
+impulse, the force late in the entry (mean Fy over 20-50 ms), the largest equivalent strain
+of each part with its angle from the keel, the largest keel deflection, the ovalisation at
+the end, and the energy residual relative to the largest term.
+Usage: scripts/fuselage_study_table.py OUT
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+CENTRE = (1.5, 2.3)  # the shipped fuselage cases' section centre (reference configuration)
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head = rows[0]
+    data = [[float(v) for v in r] for r in rows[1:] if r]
+    return head, data
+
+
+def column(head, name):
+    for i, h in enumerate(head):
+        if h == name or h.startswith(name + " ["):
+            return i
+    return None
+
+
+def keel_angle(x, y):
+    """Angle from the keel about the section centre, degrees, anticlockwise (app/keel_angle.h)."""
+    a = math.degrees(math.atan2(x - CENTRE[0], -(y - CENTRE[1])))
+    return a % 360.0
+
+
+def row(out, name):
+    d = os.path.join(out, name)
+    s = json.load(open(os.path.join(d, "summary.json")))
+    body = "fuselage"
+    fh, fd = read_csv(os.path.join(d, "forces.csv"))
+    t = [r[0] for r in fd]
+    fy = [r[column(fh, body + " Fy")] for r in fd]
+    k = max(range(len(fy)), key=lambda i: abs(fy[i]))
+    impulse = sum(0.5 * (fy[i] + fy[i - 1]) * (t[i] - t[i - 1]) for i in range(1, len(t)))
+    late = [fy[i] for i in range(len(t)) if 0.02 <= t[i] <= 0.05]
+    late_mean = sum(late) / len(late) if late else float("nan")
+    ph, pd = read_csv(os.path.join(d, "probes.csv"))
+    kc = column(ph, "keel")
+    keel = max((r[kc] for r in pd), key=abs) if kc is not None else float("nan")
+    dv, dh = column(ph, "oval_dDv"), column(ph, "oval_dDh")
+    oval = (pd[-1][dv], pd[-1][dh]) if dv is not None else (float("nan"),) * 2
+    sc, fl = column(ph, "column_shortening"), column(ph, "floor_midspan")
+    col = max((r[sc] for r in pd), key=abs) if sc is not None else None
+    flo = max((r[fl] for r in pd), key=abs) if fl is not None else None
+    parts = []
+    for b in s.get("parts", []):
+        if b["body"] != body:
+            continue
+        for p in b["parts"]:
+            if p.get("particles", 0) == 0 or "peak_equivalent_strain" not in p:
+                continue
+            x, y = p["peak_position_m"]
+            parts.append("%s %.2e at %.0f° (%.1f ms)" % (
+                p["name"], p["peak_equivalent_strain"], keel_angle(x, y), 1e3 * p["peak_time_s"]))
+    steps = s.get("fluid_steps", 0)
+    sub = s.get("solid_substeps", 0) / steps if steps else float("nan")
+    e = s.get("energy_balance", {})
+    return [
+        name, s.get("status", "?"), "%d / %d" % (s["particles"]["fluid"], s["particles"][body]),
+        "%d" % steps, "%.0f" % sub, "%.0f s (%d)" % (s.get("wall_seconds", 0), s.get("threads", 0)),
+        "%d" % s.get("leaked_particles", -1), "%.1f kN/m at %.2f ms" % (fy[k] / 1e3, 1e3 * t[k]),
+        "%.2f" % impulse, "%.2f" % (late_mean / 1e3), "%.1f" % (1e3 * keel),
+        "%.1f / %.1f" % (1e3 * oval[0], 1e3 * oval[1]),
+        "%.2f" % (1e3 * col) if col is not None else "–",
+        "%.2f" % (1e3 * flo) if flo is not None else "–",
+        "<br>".join(parts), "%.1f %%" % (100 * e.get("residual_relative", float("nan"))),
+    ]
+
+
+def main():
+    out = sys.argv[1]
+    names = sorted(n for n in os.listdir(out)
+                   if os.path.isfile(os.path.join(out, n, "summary.json"))
+                   and os.path.isfile(os.path.join(out, n, "forces.csv")))
+    head = ["run", "status", "water / structure particles", "fluid steps", "sub-steps per step",
+            "wall (threads)", "leaked", "peak Fy", "impulse Fy [N s/m]", "mean Fy 20-50 ms [kN/m]",
+            "max keel deflection [mm]", "end ΔD vertical / horizontal [mm]",
+            "max column shortening [mm]", "max floor mid-span deflection [mm]",
+            "peak equivalent strain per part, angle from the keel", "energy residual"]
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for n in names:
+        try:
+            print("| " + " | ".join(row(out, n)) + " |")
+        except (OSError, KeyError, ValueError, IndexError) as err:
+            print("| %s | unreadable: %s |" % (n, err))
+
+
+if __name__ == "__main__":
+    main()
