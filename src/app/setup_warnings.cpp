@@ -51,11 +51,36 @@ void warn_fine_bodies_at_small_h(const CaseConfig& cfg, std::vector<std::string>
   }
 }
 
+// A ring's particles are spaced t/layers through the thickness and along the arc
+// (geometry/polar_lattice.h) whatever the body's dx, while dx sets the body's smoothing
+// length (docs/model.md §1, "Three smoothing lengths") and the spacing of its ghost layers
+// (docs/model.md §4): with layers given explicitly, t/layers far from dx gives the solid
+// kernel too few or too many neighbours and misplaces the ghosts. 25 % covers rounding.
+constexpr double kRingSpacingTolerance = 0.25;
+
+void warn_ring_spacing_mismatch(const CaseConfig& cfg, std::vector<std::string>& out) {
+  for (std::size_t i = 0; i < cfg.bodies.size(); ++i) {
+    const BodyConfig& b = cfg.bodies[i];
+    if (b.shape.type != "ring" || b.shape.layers <= 0 || !(b.dx > 0.0)) continue;
+    const double t = (b.shape.outer_radius - b.shape.inner_radius) / b.shape.layers;
+    if (std::abs(t / b.dx - 1.0) <= kRingSpacingTolerance) continue;
+    char buf[600];
+    std::snprintf(buf, sizeof buf,
+                  "body[%zu] '%s': the ring's %d layers space its particles %.3g m apart, but "
+                  "the body's dx is %.3g m (it sets the body's smoothing length and ghost "
+                  "spacing); set body[%zu].dx = %.3g (or spacing_ratio = numerics.dx / %.3g) "
+                  "or drop shape.layers",
+                  i, b.name.c_str(), b.shape.layers, t, b.dx, i, t, t);
+    out.emplace_back(buf);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> setup_warnings(const CaseConfig& cfg) {
   std::vector<std::string> out;
   const NumericsConfig& num = cfg.numerics;
+  warn_ring_spacing_mismatch(cfg, out);
   if (cfg.fluid.blocks.empty()) return out;
   warn_fine_bodies_at_small_h(cfg, out);
   // Two pressure scales load the start lattice: the hydrostatic rho g H of water at rest and

@@ -17,6 +17,9 @@ namespace slamsph {
 // residual pushes the marginally stable square lattice over (docs/model.md §4, "Bodies
 // finer than the water": still water at h = 1.38 dx reached 18 % (r = 3) and 33 % (r = 4)
 // of sqrt(gH); at h = 1.5 dx at most 2.2 % up to r = 8).
+//
+// A ring with explicit `layers` whose particle spacing t/layers differs from the body's dx
+// (which sets its smoothing length) by more than 25 %.
 std::vector<std::string> setup_warnings(const CaseConfig& cfg);
 
 }  // namespace slamsph

@@ -65,3 +65,33 @@ TEST(SetupWarnings, FuselageSkinSpacingSetsTheRatio) {
     warned = warned || s.find("is 4 times finer than the water") != std::string::npos;
   EXPECT_TRUE(warned);
 }
+
+// A ring with explicit layers spaced far from the body's dx (its smoothing length) is
+// flagged; the shipped reduced skin ring (layers 2, dx = t/2) is not.
+TEST(SetupWarnings, FlagsARingWhoseLayersDoNotMatchItsDx) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/skin_ring_reduced.toml");
+  auto ring_warnings = [&] {
+    int n = 0;
+    for (const std::string& s : setup_warnings(cfg))
+      n += s.find("the ring's") != std::string::npos ? 1 : 0;
+    return n;
+  };
+  std::size_t r = 0;
+  while (r < cfg.bodies.size() && cfg.bodies[r].shape.type != "ring") ++r;
+  ASSERT_LT(r, cfg.bodies.size());
+  BodyConfig& b = cfg.bodies[r];
+  ASSERT_GT(b.shape.layers, 0);
+  EXPECT_EQ(ring_warnings(), 0);
+  const double t = (b.shape.outer_radius - b.shape.inner_radius) / b.shape.layers;
+  b.dx = 1.2 * t;  // within 25 %
+  EXPECT_EQ(ring_warnings(), 0);
+  b.dx = 4.0 * t;  // the water's spacing left as the body's
+  ASSERT_EQ(ring_warnings(), 1);
+  for (const std::string& s : setup_warnings(cfg)) {
+    if (s.find("the ring's") != std::string::npos) {
+      EXPECT_NE(s.find("body[" + std::to_string(r) + "].dx"), std::string::npos) << s;
+    }
+  }
+  b.shape.layers = 0;  // layers from dx: spacing follows dx by construction
+  EXPECT_EQ(ring_warnings(), 0);
+}
