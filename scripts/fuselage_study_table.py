@@ -65,9 +65,12 @@ def row(out, name):
         for p in b["parts"]:
             if p.get("particles", 0) == 0 or "peak_equivalent_strain" not in p:
                 continue
-            x, y = p["peak_position_m"]
+            if "peak_angle_deg" in p:
+                angle = p["peak_angle_deg"] % 360.0
+            else:  # older runs: current position about the reference centre
+                angle = keel_angle(*p["peak_position_m"])
             parts.append("%s %.2e at %.0f° (%.1f ms)" % (
-                p["name"], p["peak_equivalent_strain"], keel_angle(x, y), 1e3 * p["peak_time_s"]))
+                p["name"], p["peak_equivalent_strain"], angle, 1e3 * p["peak_time_s"]))
     steps = s.get("fluid_steps", 0)
     sub = s.get("solid_substeps", 0) / steps if steps else float("nan")
     e = s.get("energy_balance", {})

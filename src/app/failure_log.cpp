@@ -38,12 +38,7 @@ void FailureLog::reset(const std::vector<SolidBody>& bodies) {
     if (const auto* jc = std::get_if<JohnsonCook>(&body.material.law))
       active_ = active_ || jc->parameters().jc.failure.kind != FailureKind::None;
     failed_slot_[b] = k;
-    double m = 0.0;
-    for (std::size_t i = 0; i < body.size(); ++i) {
-      centre_[b] += body.m[i] * body.X[i];
-      m += body.m[i];
-    }
-    if (m > 0.0) centre_[b] = centre_[b] / m;
+    centre_[b] = reference_mass_centre(body);
     seen_[b].assign(body.size(), 0);
     const std::vector<double>& f = body.history.values[static_cast<std::size_t>(k)];
     for (std::size_t i = 0; i < body.size(); ++i) seen_[b][i] = f[i] > 0.5;

@@ -1,5 +1,7 @@
 #include "app/part_peaks.h"
 
+#include "app/keel_angle.h"
+
 #include <string>
 
 #include "io/json_writer.h"
@@ -49,6 +51,7 @@ std::vector<JsonObject> PartPeaks::summary(const std::vector<SolidBody>& bodies)
     for (std::size_t i = 0; i < b.size(); ++i)
       if (part_of(b, i) < parts) ++count[part_of(b, i)];
     const bool strained = b.is_elastic() && b.F.size() == b.size();
+    const Vec2 centre = reference_mass_centre(b);
     std::vector<JsonObject> table;
     for (std::size_t p = 0; p < parts; ++p) {
       JsonObject o;
@@ -61,6 +64,14 @@ std::vector<JsonObject> PartPeaks::summary(const std::vector<SolidBody>& bodies)
         o.set("peak_time_s", s[1]);
         o.set("peak_particle", static_cast<long>(s[2]));
         o.set("peak_position_m", std::vector<double>{s[3], s[4]});
+        // Where on the structure: the particle's reference position and its angle from the
+        // keel about the reference mass centre (as failure.csv), which a moving body's
+        // current position does not tell.
+        const std::size_t i = static_cast<std::size_t>(s[2]);
+        if (i < b.size()) {
+          o.set("peak_reference_position_m", std::vector<double>{b.X[i].x, b.X[i].y});
+          o.set("peak_angle_deg", keel_angle_deg(b.X[i] - centre));
+        }
       }
       table.push_back(o);
     }

@@ -57,6 +57,10 @@ TEST(PartPeaks, EachPartKeepsItsOwnPeakWithTimeAndPlace) {
   EXPECT_NE(json.find("\"name\":\"floor\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"particles\":2"), std::string::npos) << json;
   EXPECT_NE(json.find("\"peak_equivalent_strain\""), std::string::npos) << json;
+  // Where on the structure: the floor's peak particle 3 at its reference (3, 0), 90° from
+  // the keel about the reference centre (1.5, 0) (+x side; failure.csv's convention).
+  EXPECT_NE(json.find("\"peak_reference_position_m\":[3,0]"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"peak_angle_deg\":90"), std::string::npos) << json;
 }
 
 TEST(PartPeaks, OnePartBodyAndRigidBody) {
