@@ -39,6 +39,15 @@ def keel_angle(x, y):
     return a % 360.0
 
 
+def reference_position(run_dir, body, particle):
+    """Position of a body particle in the run's first VTK frame (t = 0: the reference)."""
+    import vtk  # python3-vtk9 (a test package)
+    r = vtk.vtkXMLPolyDataReader()
+    r.SetFileName(os.path.join(run_dir, "vtk", body + "_00000.vtp"))
+    r.Update()
+    return r.GetOutput().GetPoint(particle)[:2]
+
+
 def row(out, name):
     d = os.path.join(out, name)
     s = json.load(open(os.path.join(d, "summary.json")))
@@ -67,8 +76,11 @@ def row(out, name):
                 continue
             if "peak_angle_deg" in p:
                 angle = p["peak_angle_deg"] % 360.0
-            else:  # older runs: current position about the reference centre
-                angle = keel_angle(*p["peak_position_m"])
+            else:  # runs before summary.json had it: the particle's position at t = 0
+                try:
+                    angle = keel_angle(*reference_position(d, body, p["peak_particle"]))
+                except ImportError:  # no VTK reader: the current position (approximate)
+                    angle = keel_angle(*p["peak_position_m"])
             parts.append("%s %.2e at %.0f° (%.1f ms)" % (
                 p["name"], p["peak_equivalent_strain"], angle, 1e3 * p["peak_time_s"]))
     steps = s.get("fluid_steps", 0)
