@@ -4,11 +4,13 @@
 Reads every run folder under OUT (summary.json, forces.csv, probes.csv) and prints one
 Markdown row per run: particles, fluid steps, solid sub-steps per fluid step, wall time and
 threads, status, leaked water particles, the peak vertical force and its time, the vertical
-impulse, the force late in the entry (mean Fy over 20-50 ms), the largest equivalent strain
+impulse, the force late in the entry (mean Fy over 20-50 ms), the largest step-to-step
+oscillation of Fy (rms about its 1 ms moving average, worst 5 ms window), the largest equivalent strain
 of each part with its angle from the keel, the largest keel deflection, the ovalisation at
 the end, and the energy residual relative to the largest term.
 Usage: scripts/fuselage_study_table.py OUT
 """
+import bisect
 import csv
 import json
 import math
@@ -57,6 +59,19 @@ def row(out, name):
     fy = [r[column(fh, body + " Fy")] for r in fd]
     k = max(range(len(fy)), key=lambda i: abs(fy[i]))
     impulse = sum(0.5 * (fy[i] + fy[i - 1]) * (t[i] - t[i - 1]) for i in range(1, len(t)))
+    # Step-to-step oscillation: rms of Fy about its centred 1 ms moving average, and the
+    # largest such rms over 5 ms windows with the window's start (docs/studies.md §2).
+    osc = []
+    for w0 in range(0, int(1e3 * t[-1]) + 1, 5):
+        idx = [j for j in range(len(t)) if w0 * 1e-3 <= t[j] < (w0 + 5) * 1e-3]
+        if len(idx) < 10:
+            continue
+        res = []
+        for j in idx:
+            lo, hi = bisect.bisect_left(t, t[j] - 5e-4), bisect.bisect_right(t, t[j] + 5e-4)
+            res.append(fy[j] - sum(fy[lo:hi]) / (hi - lo))
+        osc.append((math.sqrt(sum(x * x for x in res) / len(res)), w0))
+    osc_max = max(osc) if osc else (float("nan"), 0)
     late = [fy[i] for i in range(len(t)) if 0.02 <= t[i] <= 0.05]
     late_mean = sum(late) / len(late) if late else float("nan")
     ph, pd = read_csv(os.path.join(d, "probes.csv"))
@@ -90,7 +105,8 @@ def row(out, name):
         name, s.get("status", "?"), "%d / %d" % (s["particles"]["fluid"], s["particles"][body]),
         "%d" % steps, "%.0f" % sub, "%.0f s (%d)" % (s.get("wall_seconds", 0), s.get("threads", 0)),
         "%d" % s.get("leaked_particles", -1), "%.1f kN/m at %.2f ms" % (fy[k] / 1e3, 1e3 * t[k]),
-        "%.2f" % impulse, "%.2f" % (late_mean / 1e3), "%.1f" % (1e3 * keel),
+        "%.2f" % impulse, "%.2f" % (late_mean / 1e3),
+        "%.1f (%d-%d ms)" % (osc_max[0] / 1e3, osc_max[1], osc_max[1] + 5), "%.1f" % (1e3 * keel),
         "%.1f / %.1f" % (1e3 * oval[0], 1e3 * oval[1]),
         "%.2f" % (1e3 * col) if col is not None else "–",
         "%.2f" % (1e3 * flo) if flo is not None else "–",
@@ -104,7 +120,7 @@ def main():
                    if os.path.isfile(os.path.join(out, n, "summary.json"))
                    and os.path.isfile(os.path.join(out, n, "forces.csv")))
     head = ["run", "status", "water / structure particles", "fluid steps", "sub-steps per step",
-            "wall (threads)", "leaked", "peak Fy", "impulse Fy [N s/m]", "mean Fy 20-50 ms [kN/m]",
+            "wall (threads)", "leaked", "peak Fy", "impulse Fy [N s/m]", "mean Fy 20-50 ms [kN/m]", "largest Fy oscillation rms [kN/m] (window)",
             "max keel deflection [mm]", "end ΔD vertical / horizontal [mm]",
             "max column shortening [mm]", "max floor mid-span deflection [mm]",
             "peak equivalent strain per part, angle from the keel", "energy residual"]
