@@ -88,8 +88,11 @@ void SnapshotWriter::write(const FsiStepper& st, std::size_t index) {
     view = {{std::max(d.min.x, bb.min.x - pad.x), std::max(d.min.y, bb.min.y - pad.y)},
             {std::min(d.max.x, bb.max.x + pad.x), std::min(d.max.y, bb.max.y + pad.y)}};
   }
-  // Data: x, y, set (0 water, 1 elastic, 2 rigid), value, radius of the drawn disc.
+  // Data: x, y, set (0 water, 1 elastic, 2 rigid, 3 failed elastic), value, radius of the
+  // drawn disc. Failed particles (a material with failure, issue 11) are drawn over the rest
+  // as open circles, so where the structure broke shows on the final state.
   double pmin = std::numeric_limits<double>::infinity(), pmax = -pmin, emax = 0.0;
+  std::size_t failed = 0;
   {
     std::ofstream f(dir_ + "/" + stem + ".csv");
     f << "x [m],y [m],set [-],value [Pa or -],radius [m]\n";
@@ -105,13 +108,19 @@ void SnapshotWriter::write(const FsiStepper& st, std::size_t index) {
       const SolidBody& body = sys.bodies[b];
       const bool el = body.is_elastic() && body.F.size() == body.size();
       const bool own = body.spacing.size() == body.size();  // parts of their own spacing
+      const std::vector<double>* fl = el ? body.history.find("failed") : nullptr;
       for (std::size_t i = 0; i < body.size(); ++i) {
         if (!inside(view, body.x[i])) continue;
         const double r = 0.5 * (own ? body.spacing[i] : cfg_.bodies[b].dx);
         const double e = el ? equivalent_strain(green_lagrange(body.F[i])) : 0.0;
+        const bool broken = fl && (*fl)[i] > 0.5;
+        failed += broken ? 1 : 0;
         emax = std::max(emax, e);
-        f << num(body.x[i].x) << ',' << num(body.x[i].y) << ',' << (el ? 1 : 2) << ',' << num(e)
-          << ',' << num(r) << '\n';
+        f << num(body.x[i].x) << ',' << num(body.x[i].y) << ','
+          << (broken ? 3
+              : el   ? 1
+                     : 2)
+          << ',' << num(e) << ',' << num(r) << '\n';
       }
     }
   }
@@ -149,8 +158,17 @@ void SnapshotWriter::write(const FsiStepper& st, std::size_t index) {
   s += "set palette rgb 7,5,15\nset cbrange [0:" + num(emax) + "]\n";
   s += "set colorbox user origin screen 0.89, screen 0.15 size screen 0.02, screen 0.7\n";
   s += "set cblabel 'equivalent strain [-]'\n";
+  if (failed > 0)
+    s += "set label 1 " +
+         gnuplot_quote(std::to_string(failed) + " failed particle" + (failed > 1 ? "s" : "") +
+                       " (open circles)") +
+         " at graph 0.02, graph 0.96 front textcolor rgb '#0080c0'\n";
   s += "plot " + gnuplot_quote(stem + ".csv") +
-       " skip 1 using 1:($3 == 1 ? $2 : NaN):5:4 with circles fill solid noborder lc palette\n";
+       " skip 1 using 1:($3 == 1 ? $2 : NaN):5:4 with circles fill solid noborder lc palette";
+  if (failed > 0)
+    s += ", \\\n     '' skip 1 using 1:($3 == 3 ? $2 : NaN) with points pt 6 ps 1.2 lw 2 lc rgb "
+         "'#00c0ff'";
+  s += "\n";
   s += "unset multiplot\n";
   std::string message;
   const int rc = run_gnuplot_script(dir_, stem, s, "gnuplot", message);

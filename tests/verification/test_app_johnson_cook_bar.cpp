@@ -33,7 +33,8 @@ TEST(JohnsonCookBar, FailsNextToTheClampAndReportsIt) {
   const fs::path out = fs::temp_directory_path() / ("slamsph_jc_bar_" + std::to_string(getpid()));
   fs::remove_all(out);
   const std::string cmd = std::string("'") + SLAMSPH_BINARY + "' run '" + SLAMSPH_SOURCE_DIR +
-                          "/cases/johnson_cook_bar.toml' --threads 1 --quiet --out '" +
+                          "/cases/johnson_cook_bar.toml' --threads 1 --quiet --set "
+                          "'output.snapshots=[0.00015]' --out '" +
                           out.string() + "' > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
 
@@ -65,5 +66,15 @@ TEST(JohnsonCookBar, FailsNextToTheClampAndReportsIt) {
   for (const char* name : {"equivalent_plastic_strain", "temperature", "damage", "failed",
                            "triaxiality", "plastic_strain_rate"})
     EXPECT_NE(vtp.find(std::string("Name=\"") + name + "\""), std::string::npos) << name;
+  // The final snapshot draws every failed particle (set 3 of its CSV), and says how many.
+  const CsvTable snap = read_csv((out / "snapshots" / "snapshot_01.csv").string());
+  const int set = snap.find("set [-]");
+  ASSERT_GE(set, 0);
+  std::size_t drawn = 0;
+  for (double v : snap.columns[set]) drawn += v == 3.0 ? 1 : 0;
+  EXPECT_EQ(drawn, f.rows());
+  EXPECT_NE(read_file(out / "snapshots" / "snapshot_01.gp")
+                .find(std::to_string(f.rows()) + " failed particles"),
+            std::string::npos);
   if (!HasFailure()) fs::remove_all(out);
 }

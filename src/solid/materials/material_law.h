@@ -56,6 +56,13 @@ struct MaterialHistory {
       values[k].assign(n, initial.empty() ? fields[k].initial : initial[k]);
     updates = 0;
   }
+
+  // The values of the field called `name`, or nullptr when the law declares none.
+  const std::vector<double>* find(std::string_view name) const {
+    for (std::size_t k = 0; k < fields.size(); ++k)
+      if (fields[k].name == name) return &values[k];
+    return nullptr;
+  }
 };
 
 // Typed model choice from the case file ([materials.<name>] model = "..."); the elastic
