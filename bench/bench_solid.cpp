@@ -8,6 +8,11 @@
 //    of its n = 2 mode, advanced by advance_body over 20 stable steps per iteration (the
 //    sub-step loop alone, no fluid). Arguments: case (0: 2 layers, 2 514 particles, r 0.3 m;
 //    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads.
+//  - BM_RingSubstepsJohnsonCook: the same rings with the Johnson–Cook law (the Al 2024-T3
+//    preset's flow stress, heating, EOS and failure constants; the same E and ν as above,
+//    so the sub-step count is comparable). The mode stays elastic (stress ~10 MPa against
+//    A = 265 MPa): the rate ratio to BM_RingSubsteps is the cost of the law's elastic path
+//    (issue 11: at most 2x the SVK sub-step).
 // Callgrind: `valgrind --tool=callgrind --toggle-collect='slamsph::advance_body*'
 //   build/bench/bench_solid --benchmark_filter='BM_RingSubsteps/case:0/threads:1'
 //   --benchmark_min_time=0` counts the sub-step loop only (notes: instructions per
@@ -24,6 +29,7 @@
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 #include "solid/body_dynamics.h"
+#include "solid/materials/material_presets.h"
 
 using namespace slamsph;
 
@@ -54,7 +60,7 @@ struct RingCase {
 };
 constexpr RingCase kRings[] = {{0.3, 2}, {0.3, 4}, {0.7958, 6}};
 
-SolidBody aluminium_ring(const RingCase& rc) {
+SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false) {
   const double t = 0.003;
   const ParticleLattice lat = ring({0.0, 0.0}, rc.r_mid - 0.5 * t, rc.r_mid + 0.5 * t, rc.layers);
   const double rho = 2700.0;
@@ -77,6 +83,7 @@ SolidBody aluminium_ring(const RingCase& rc) {
   mat.youngs_modulus = 70e9;
   mat.poisson_ratio = 0.3;
   mat.hourglass = 0.1;
+  if (johnson_cook) mat.model = kAl2024T3.model;
   cfg.material = mat;
   setup_body(b, cfg);
   // n = 2 ovalisation mode, 1 m/s radial amplitude: half the pairs approach (viscosity on).
@@ -88,8 +95,8 @@ SolidBody aluminium_ring(const RingCase& rc) {
   return b;
 }
 
-void BM_RingSubsteps(benchmark::State& st) {
-  SolidBody b = aluminium_ring(kRings[st.range(0)]);
+void ring_substeps(benchmark::State& st, bool johnson_cook) {
+  SolidBody b = aluminium_ring(kRings[st.range(0)], johnson_cook);
   const Executor exec(static_cast<int>(st.range(1)));
   double t = 0.0;
   long substeps = 0;
@@ -103,7 +110,20 @@ void BM_RingSubsteps(benchmark::State& st) {
   st.counters["particles"] = static_cast<double>(b.size());
   st.counters["substeps"] = static_cast<double>(substeps);
 }
+
+void BM_RingSubsteps(benchmark::State& st) {
+  ring_substeps(st, false);
+}
 BENCHMARK(BM_RingSubsteps)
+    ->ArgsProduct({{0, 1, 2}, {1, 2}})
+    ->ArgNames({"case", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_RingSubstepsJohnsonCook(benchmark::State& st) {
+  ring_substeps(st, true);
+}
+BENCHMARK(BM_RingSubstepsJohnsonCook)
     ->ArgsProduct({{0, 1, 2}, {1, 2}})
     ->ArgNames({"case", "threads"})
     ->Unit(benchmark::kMillisecond)

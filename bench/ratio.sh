@@ -7,7 +7,8 @@
 # landed main in /tmp/base/build and this worktree's build). Reports real time, CPU time and
 # items per second (solid particle-steps/s); on a shared machine compare the CPU column and
 # prefer callgrind counts (RATIO_MODE=callgrind: instructions inside advance_body for each
-# BM_RingSubsteps case, 1 thread, one iteration each; deterministic, REPEAT ignored).
+# case 0-2 of the FILTER family (BM_RingSubsteps or BM_RingSubstepsJohnsonCook), 1 thread,
+# one iteration each; deterministic, REPEAT ignored).
 set -euo pipefail
 base=$1
 new=$2
@@ -20,7 +21,7 @@ trap 'rm -rf "$tmp"' EXIT
 if [[ $mode == callgrind ]]; then
   printf "%-45s %15s %15s %8s\n" benchmark "base Ir" "new Ir" "base/new"
   for c in 0 1 2; do
-    name="BM_RingSubsteps/case:$c/threads:1/"
+    name="$filter/case:$c/threads:1/"
     for b in base new; do
       dir=$base
       [[ $b == new ]] && dir=$new

@@ -25,7 +25,9 @@ ElasticState elastic_state(const Mat2& F, double Fzz, std::span<const double> h)
   ElasticState st{spectral(b.xx, 0.5 * (b.xy + b.yx), b.yy), {}, det(F) * Fzz};
   st.eps[0] = 0.5 * std::log(st.sp.e1);
   st.eps[1] = 0.5 * std::log(st.sp.e2);
-  st.eps[2] = 0.5 * std::log(Fzz * Fzz * h[JC::kCpInvZZ]);
+  // In plane strain with no plastic flow yet the zz stretch is exactly 1: skip the log.
+  const double zz = Fzz * Fzz * h[JC::kCpInvZZ];
+  st.eps[2] = zz == 1.0 ? 0.0 : 0.5 * std::log(zz);
   return st;
 }
 
@@ -88,6 +90,23 @@ struct Consistency {
   }
 };
 
+// True if the trial stress q is certainly inside the yield surface, decided without the
+// powers of the flow stress: with B ≥ 0 and m ≥ 1 (T*^m ≤ T*), σ_y(ε̄p, ε̇* = 1, T) ≥
+// A (1 − T*), and a margin of 1e-12 covers the rounding of both sides. Then r(0) ≤ 0 too,
+// so the elastic check costs no pow for the (many) particles far from yielding and the
+// result is the same bit for bit. T* as Consistency computes it at Δ = 0.
+bool surely_elastic(const JohnsonCookModel& jc, double q, double T) {
+  if (!(jc.b >= 0.0) || !(jc.a > 0.0)) return false;
+  const double t =
+      (T - jc.reference_temperature) / (jc.melting_temperature - jc.reference_temperature);
+  double theta = 1.0;
+  if (t > 0.0) {
+    if (!(t < 1.0) || !(jc.m >= 1.0)) return false;
+    theta = 1.0 - t;
+  }
+  return q < (1.0 - 1e-12) * jc.a * theta;
+}
+
 // The root Δ ∈ [0, q/(3μ)] (r(0) > 0 ≥ r(q/3μ) = −σ_y): Newton steps kept inside the
 // bracket, bisection when a step leaves it or the slope is not finite (ε̄p = 0 with n < 1).
 double solve_consistency(const Consistency& r) {
@@ -123,7 +142,7 @@ KirchhoffStress JohnsonCook::update_kirchhoff(const Mat2& F, double Fzz, double 
     const Consistency r{jc, p_.mu, p_.rho0, q, ep, T, dt};
     double dr = 0.0;
     double d = 0.0;
-    if (r(0.0, dr) > 0.0) d = solve_consistency(r);
+    if (!surely_elastic(jc, q, T) && r(0.0, dr) > 0.0) d = solve_consistency(r);
     double q_new = q;
     if (d > 0.0) {
       // Radial return (Simo & Hughes 1998, Box 9.1) with the Δε̄p of the JC consistency.
