@@ -7,6 +7,7 @@
 
 #include "app/simulation.h"
 #include "solid/body_dynamics.h"
+#include "solid/materials/johnson_cook.h"
 
 namespace slamsph {
 
@@ -54,6 +55,7 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   }
   for (const SolidBody& b : sim.bodies()) {
     BodyCost bc{b.name, b.size(), b.is_elastic(), stable_time_step(b), 0};
+    if (std::holds_alternative<JohnsonCook>(b.material.law)) bc.law_factor = k.johnson_cook_factor;
     if (share && bc.stable_step < dt) {
       dt = bc.stable_step;
       c.limiter = "solid CFL (body " + b.name + ")";
@@ -78,8 +80,8 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
         std::max(1L, static_cast<long>(std::ceil(dt / bc.stable_step * (1.0 - 1e-12))));
     const long total = bc.substeps_per_step * c.fluid_steps;
     c.solid_substeps += total;
-    c.solid_seconds +=
-        1e-9 * k.solid_ns * static_cast<double>(bc.particles) * static_cast<double>(total);
+    c.solid_seconds += 1e-9 * k.solid_ns * bc.law_factor * static_cast<double>(bc.particles) *
+                       static_cast<double>(total);
   }
   return c;
 }

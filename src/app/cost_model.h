@@ -29,10 +29,16 @@ class Simulation;
 //    medians of 3, solved for the two unknowns;
 //  - solid: bench_solid BM_RingSubsteps case 0 and 1, 1 thread, CPU column (72 and 85 ns
 //    per particle-sub-step, SVK with viscosity and hourglass control).
+//  - the Johnson–Cook law's sub-step costs johnson_cook_factor times an SVK one: callgrind
+//    instruction ratio of bench_solid BM_RingSubstepsJohnsonCook to BM_RingSubsteps, 1.82 /
+//    1.75 / 1.73 at 2 514 / 10 052 / 60 000 particles on the elastic path (docs/validation.md
+//    §6); a yielding particle costs more (the Newton iteration), not modelled. J2 is taken at
+//    the SVK cost (not measured).
 struct CostConstants {
   double fluid_ns = 186.0;    // per water particle per fluid step
   double contact_ns = 112.0;  // per contact (body surface and ghost) particle per fluid step
-  double solid_ns = 80.0;     // per elastic particle per sub-step
+  double solid_ns = 80.0;     // per elastic particle per sub-step (SVK)
+  double johnson_cook_factor = 1.75;
 };
 
 struct BodyCost {
@@ -41,6 +47,7 @@ struct BodyCost {
   bool elastic = false;
   double stable_step = 0.0;    // [s] elastic: at the start; rigid: +inf
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
+  double law_factor = 1.0;     // sub-step cost of its material law relative to SVK
 };
 
 struct CostPrediction {
