@@ -12,6 +12,7 @@
 #include "solid/cantilever_mode.h"
 #include "solid/deformation_gradient.h"
 #include "solid/elastic_substep.h"
+#include "solid/eulerian_failed_interaction.h"
 #include "solid/hourglass_control.h"
 #include "solid/rigid_motion.h"
 #include "solid/stress_update.h"
@@ -49,6 +50,7 @@ void internal_forces(SolidBody& body, std::span<const Vec2> vel, const Executor&
   compute_stress_forces(body, body.topology, exec, s.f_stress);
   compute_artificial_viscosity(body, body.topology, vel, exec, body.f_av, s.heat);
   compute_hourglass_forces(body, body.topology, body.material.hourglass, exec, body.f_hg);
+  add_eulerian_forces(body, vel, exec, s.f_stress, body.f_av, s.heat);  // none if none failed
   exec.for_each(
       n, [&](std::size_t i) { body.f_int[i] = s.f_stress[i] + body.f_av[i] + body.f_hg[i]; });
 }
@@ -59,6 +61,9 @@ constexpr double kMaxSubstepsInRun = 1e7;
 
 void advance_elastic(SolidBody& body, double t, double dt, Vec2 gravity, const Executor& exec) {
   const std::size_t n = body.size();
+  // Particles that failed in the previous step leave the total-Lagrangian sums before the
+  // stable step reads the (rebuilt) topology (solid/eulerian_failed_interaction.h).
+  update_eulerian_switch(body, exec);
   const double dts = stable_time_step(body);
   const double ratio = dt / dts;
   if (!(ratio <= kMaxSubstepsInRun)) {

@@ -7,6 +7,7 @@
 
 #include "core/parallel.h"
 #include "solid/artificial_viscosity.h"
+#include "solid/eulerian_failed_interaction.h"
 #include "solid/hourglass_control.h"
 #include "solid/stress_update.h"
 
@@ -28,6 +29,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const double alpha = mat.hourglass;
   const double c = mat.sound_speed, av_alpha = mat.av_alpha, av_beta = mat.av_beta;
   const double hh = 0.5 * h;
+  // Failed particles interact in the current configuration (eulerian_failed_interaction.h);
+  // false for every body with no failed particle, whose loop is then the one below.
+  const bool eulerian = body.eulerian.active;
   const std::uint32_t* const start = topo.pairs.start.data();
   const std::uint32_t* const index = topo.pairs.index.data();
   const std::uint32_t* const reverse = topo.pair_reverse.data();
@@ -83,11 +87,17 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     }
     team.barrier();
     for (int step = 0; step < steps; ++step) {
+      if (eulerian) {  // current pairs of the switched particles at the drifted positions
+        if (team.leader()) build_eulerian_pairs(body, x);
+        team.barrier();
+      }
       // Pass 1: F and Ḟ, the viscous pair terms (each pair once, from its lower particle:
       // they depend on x and v½ only), the law's committing update, stress power, hourglass
       // moment.
       for (std::size_t i = b; i < e; ++i) {
         Mat2 F, Fdot;
+        // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
+        // its F comes from its current neighbours.
         const Vec2 xi = x[i], vi = vh[i];
         const std::uint32_t k0 = start[i], ku = w.upper[i], k1 = start[i + 1];
         for (std::uint32_t k = k0; k < ku; ++k) {
@@ -120,6 +130,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             w.q_visc[rk] = q;
           }
         }
+        if (eulerian && body.eulerian.switched[i]) eulerian_motion(body, x, vh, h, i, F, Fdot);
         const Mat2 F_old = body.F[i], P_old = body.P[i];
         body.F[i] = F;
         const Mat2 P = commit_stress_at(law, body.history, F_old, F, h, i);
@@ -164,6 +175,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             grad += w.keps[k];
             grad -= w.keps[reverse[k]];
           }
+        }
+        if (eulerian) {
+          Vec2 fse, fve;
+          eulerian_force_on(body, x, vh, i, fse, fve, heat);
+          fs += fse;
+          fav += fve;
         }
         const Vec2 fhg = kHourglass ? -grad : Vec2{};
         body.f_av[i] = fav;

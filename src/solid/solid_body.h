@@ -14,6 +14,7 @@
 #include "core/kernel.h"
 #include "core/vec.h"
 #include "solid/body_kind.h"
+#include "solid/eulerian_state.h"
 #include "solid/materials/material_law_choice.h"
 #include "solid/solid_topology.h"
 #include "solid/substep_workspace.h"
@@ -92,6 +93,12 @@ struct SolidBody {
   SolidTopology topology;
 
   SubstepWorkspace substep;  // scratch of the fused sub-step (not state)
+
+  // Lagrangian → Eulerian switch of failed particles (solid/eulerian_failed_interaction.h;
+  // derived from the law's `failed` history, not state). `eulerian_switch = false` keeps
+  // failed particles in the total-Lagrangian sums (the behaviour before the switch; tests).
+  EulerianState eulerian;
+  bool eulerian_switch = true;
 
   SolidMaterial material;  // elastic bodies
   double cfl = 0.5;        // solid CFL number (spec §3), from NumericsConfig::solid_cfl

@@ -1,0 +1,212 @@
+#include "solid/eulerian_failed_interaction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/parallel.h"
+#include "solid/artificial_viscosity.h"
+
+namespace slamsph {
+namespace {
+
+int failed_slot(const SolidBody& body) {
+  for (std::size_t k = 0; k < body.history.fields.size(); ++k)
+    if (body.history.fields[k].name == "failed") return static_cast<int>(k);
+  return -1;
+}
+
+// A topology in which no particle has pairs (every particle switched).
+SolidTopology empty_topology(const SolidBody& body) {
+  SolidTopology t;
+  const std::size_t n = body.size();
+  t.pairs.start.assign(n + 1, 0);
+  t.fpm_sets.start.assign(n + 1, 0);
+  t.B.assign(n, Mat2{});
+  t.part = body.part.empty() ? std::vector<std::uint32_t>(n, 0) : body.part;
+  t.h = body.topology.h;
+  return t;
+}
+
+// The body's Cauchy stress term T/ρ² of particle i (header comment).
+Mat2 stress_term(const SolidBody& body, std::size_t i) {
+  const Mat2& F = body.F[i];
+  const double J = det(F);
+  const Mat2 s = (1.0 / J) * (body.P[i] * transpose(F));
+  const Mat2 sigma = 0.5 * (s + transpose(s));
+  const Mat2 T = 2.0 * sigma - 0.5 * trace(sigma) * Mat2::identity();
+  const double rho = body.rho0[i] / J;
+  return (1.0 / (rho * rho)) * T;
+}
+
+Kernel pair_kernel(const SolidBody& body, std::size_t i, std::size_t j) {
+  const double h = 0.5 * (body.topology.h[i] + body.topology.h[j]);
+  return h == body.kernel.h() ? body.kernel : Kernel(body.kernel.type(), h);
+}
+
+}  // namespace
+
+bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
+  EulerianState& e = body.eulerian;
+  if (!body.eulerian_switch) return false;
+  const int slot = failed_slot(body);
+  if (slot < 0) return false;
+  const std::vector<double>& failed = body.history.values[static_cast<std::size_t>(slot)];
+  const std::size_t n = body.size();
+  std::size_t count = 0;
+  for (double f : failed) count += f > 0.5 ? 1 : 0;
+  if (count == e.failed_count) return e.active;  // `failed` is sticky: same count, same set
+  if (!e.active) e.reference_pairs = body.topology.pairs;  // still the full reference build
+  e.failed_count = count;
+  const NeighbourList& ref = e.reference_pairs;
+
+  e.switched.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(failed[i] > 0.5)) continue;
+    e.switched[i] = 1;
+    for (std::uint32_t k = ref.start[i]; k < ref.start[i + 1]; ++k) e.switched[ref.index[k]] = 1;
+  }
+  const TopologySpec spec{body.scheme, body.dx, body.kernel, body.part, true, body.spacing};
+  for (;;) {
+    std::vector<std::uint32_t> intact;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!e.switched[i]) intact.push_back(static_cast<std::uint32_t>(i));
+    if (intact.empty()) {
+      body.topology = empty_topology(body);
+      break;
+    }
+    try {
+      body.topology = build_solid_topology(body.X, body.V0, spec, exec, intact);
+      break;
+    } catch (const std::invalid_argument&) {
+      // Some intact particle next to the switched ones has no usable gradient set: switch
+      // the intact particles that touch the switched set (reference pairs) and retry.
+      std::vector<std::uint8_t> grow = e.switched;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!e.switched[i]) continue;
+        for (std::uint32_t k = ref.start[i]; k < ref.start[i + 1]; ++k) grow[ref.index[k]] = 1;
+      }
+      e.switched = std::move(grow);
+    }
+  }
+  e.members.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (e.switched[i]) e.members.push_back(static_cast<std::uint32_t>(i));
+  e.active = !e.members.empty();
+  return e.active;
+}
+
+void build_eulerian_pairs(SolidBody& body, std::span<const Vec2> x) {
+  EulerianState& e = body.eulerian;
+  const std::size_t n = body.size();
+  double hmax = 0.0;
+  for (double h : body.topology.h) hmax = std::max(hmax, h);
+  const double radius = 2.0 * hmax;
+  e.member_x.resize(e.members.size());
+  for (std::size_t k = 0; k < e.members.size(); ++k) e.member_x[k] = x[e.members[k]];
+  e.grid.build(e.member_x, radius);
+  const Executor serial(1);
+  // Every particle's switched neighbours (indices into members), in the grid's cell order.
+  build_neighbour_list(x, e.member_x, e.grid, radius, false, serial, e.to_members);
+  // Counts: i lists its switched neighbours; a switched s also lists its intact neighbours.
+  NeighbourList& p = e.pairs;
+  p.start.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t k = e.to_members.start[i]; k < e.to_members.start[i + 1]; ++k) {
+      const std::uint32_t s = e.members[e.to_members.index[k]];
+      if (s == i) continue;
+      ++p.start[i + 1];
+      if (!e.switched[i]) ++p.start[s + 1];
+    }
+  for (std::size_t i = 0; i < n; ++i) p.start[i + 1] += p.start[i];
+  p.index.resize(p.start[n]);
+  std::vector<std::uint32_t> fill(p.start.begin(), p.start.end() - 1);
+  // First every particle's own switched neighbours, then (intact i ascending) the intact
+  // neighbours of the switched ones: a fixed order, so the sums do not depend on threads.
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t k = e.to_members.start[i]; k < e.to_members.start[i + 1]; ++k) {
+      const std::uint32_t s = e.members[e.to_members.index[k]];
+      if (s != i) p.index[fill[i]++] = s;
+    }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (e.switched[i]) continue;
+    for (std::uint32_t k = e.to_members.start[i]; k < e.to_members.start[i + 1]; ++k) {
+      const std::uint32_t s = e.members[e.to_members.index[k]];
+      p.index[fill[s]++] = static_cast<std::uint32_t>(i);
+    }
+  }
+}
+
+void eulerian_motion(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
+                     double h, std::size_t i, Mat2& F_new, Mat2& Fdot) {
+  const NeighbourList& p = body.eulerian.pairs;
+  Mat2 G, M;
+  const Vec2 xi = x[i], vi = v[i];
+  for (std::uint32_t k = p.start[i]; k < p.start[i + 1]; ++k) {
+    const std::uint32_t j = p.index[k];
+    const Vec2 xij = xi - x[j];
+    const double r = norm(xij);
+    if (r == 0.0) continue;
+    const Vec2 grad = (body.V0[j] * pair_kernel(body, i, j).dw_over_r(r)) * xij;
+    G += outer(v[j] - vi, grad);
+    M += outer(x[j] - xi, grad);
+  }
+  // Corrected gradient where the neighbourhood spans the plane (M ≈ 1 inside a body).
+  const Mat2 L = det(M) > 0.1 ? G * inverse(M) : G;
+  const Mat2 I = Mat2::identity();
+  const Mat2& F_old = body.F[i];
+  F_new = inverse(I - (0.5 * h) * L) * ((I + (0.5 * h) * L) * F_old);
+  Fdot = L * (0.5 * (F_old + F_new));
+}
+
+void eulerian_force_on(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
+                       std::size_t i, Vec2& fs, Vec2& fv, double& heat) {
+  const NeighbourList& p = body.eulerian.pairs;
+  fs = Vec2{};
+  fv = Vec2{};
+  if (p.start[i] == p.start[i + 1]) return;
+  const SolidMaterial& mat = body.material;
+  const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
+  const Mat2 Ti = stress_term(body, i);
+  const double rho_i = body.rho0[i] / det(body.F[i]);
+  for (std::uint32_t k = p.start[i]; k < p.start[i + 1]; ++k) {
+    const std::uint32_t j = p.index[k];
+    const Vec2 xij = x[i] - x[j];
+    const double r = norm(xij);
+    if (r == 0.0) continue;
+    const Kernel W = pair_kernel(body, i, j);
+    const double dw = W.dw(r);
+    if (dw == 0.0) continue;
+    const Vec2 eh = (1.0 / r) * xij;
+    const double mm = body.m[i] * body.m[j];
+    const Mat2 A = Ti + stress_term(body, j);
+    fs += (mm * dot(eh, A * eh) * dw) * eh;
+    if (viscous) {
+      const Vec2 vij = v[i] - v[j];
+      const double rho_mean = 0.5 * (rho_i + body.rho0[j] / det(body.F[j]));
+      const double pi =
+          monaghan_pi(vij, xij, W.h(), 1.0 / rho_mean, mat.sound_speed, mat.av_alpha, mat.av_beta);
+      if (pi == 0.0) continue;
+      const Vec2 f = (-mm * pi * dw) * eh;
+      fv += f;
+      heat += -0.5 * dot(f, vij);
+    }
+  }
+}
+
+void add_eulerian_forces(SolidBody& body, std::span<const Vec2> v, const Executor& exec,
+                         std::span<Vec2> f_stress, std::span<Vec2> f_av, std::span<double> heat) {
+  if (!body.eulerian.active) return;
+  build_eulerian_pairs(body, body.x);
+  const SolidBody& b = body;
+  exec.for_each(body.size(), [&](std::size_t i) {
+    Vec2 fs, fv;
+    double q = 0.0;
+    eulerian_force_on(b, b.x, v, i, fs, fv, q);
+    f_stress[i] += fs;
+    f_av[i] += fv;
+    heat[i] += q;
+  });
+}
+
+}  // namespace slamsph

@@ -1,0 +1,248 @@
+// The Lagrangian → Eulerian switch of failed particles (solid/eulerian_failed_interaction.h,
+// spec §5, docs/model.md §3 "Eulerian switch of failed particles"):
+//  - a free Johnson–Cook body with a band of failed particles and a rotating, perturbed
+//    velocity field keeps Σ m v and Σ m x × v to round-off through the switch and after it
+//    (the Eulerian pair forces are central and antisymmetric);
+//  - the switched set is the failed particles and their reference neighbours, the rebuilt
+//    topology has no pair that touches it, and the Eulerian pairs are symmetric;
+//  - a bar whose halves move apart across a failed band separates with the switch (the
+//    pieces end more than a kernel support apart and the right piece's momentum stops
+//    changing: the band carries no load) and stays connected without it;
+//  - 1 and 2 threads give bit-identical states on a body large enough for a team of two;
+//  - a body without failed particles is untouched (no Eulerian state, same topology).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "core/parallel.h"
+#include "solid/elastic_substep.h"
+#include "solid/eulerian_failed_interaction.h"
+#include "solid/materials/material_presets.h"
+#include "test_solid_lattices.h"
+
+using namespace slamsph;
+using namespace slamsph::testing;
+
+namespace {
+
+constexpr double kDx = 0.001;
+
+// Al 2024-T3 (paper Table 1) with the failure criterion off: only the particles a test marks
+// as failed are failed.
+ElasticMaterialInput aluminium() {
+  ElasticMaterialInput m;
+  m.name = "al";
+  JohnsonCookModel jc = kAl2024T3.model;
+  jc.failure = FailureModel{};
+  m.model = jc;
+  m.density = kAl2024T3.density;
+  m.youngs_modulus = kAl2024T3.youngs_modulus;
+  m.poisson_ratio = kAl2024T3.poisson_ratio;
+  m.av_alpha = 1.0;
+  m.hourglass = 0.1;
+  return m;
+}
+
+SolidBody bar(int nx, int ny) {
+  BodySetup cfg;
+  cfg.gravity = false;
+  return make_body(box_lattice(nx, ny, kDx), kDx, "tl_sfpm", aluminium(), cfg);
+}
+
+std::vector<double>& failed_field(SolidBody& b) {
+  for (std::size_t k = 0; k < b.history.fields.size(); ++k)
+    if (b.history.fields[k].name == "failed") return b.history.values[k];
+  throw std::logic_error("no failed field");
+}
+
+// Marks the particles of lattice column `col` (of an nx-wide box lattice) as failed.
+void fail_column(SolidBody& b, int nx, int col) {
+  std::vector<double>& f = failed_field(b);
+  for (std::size_t i = 0; i < b.size(); ++i)
+    if (static_cast<int>(i % static_cast<std::size_t>(nx)) == col) f[i] = 1.0;
+}
+
+struct Momenta {
+  Vec2 p;
+  double l = 0.0;
+  double scale_p = 0.0, scale_l = 0.0;  // Σ m|v| and Σ m|x||v|: the round-off scales
+};
+Momenta momenta(const SolidBody& b) {
+  Momenta m;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    m.p += b.m[i] * b.v[i];
+    m.l += b.m[i] * cross(b.x[i], b.v[i]);
+    m.scale_p += b.m[i] * norm(b.v[i]);
+    m.scale_l += b.m[i] * norm(b.x[i]) * norm(b.v[i]);
+  }
+  return m;
+}
+
+void advance(SolidBody& b, int steps, double dt, const Executor& exec) {
+  for (int s = 0; s < steps; ++s) advance_body(b, s * dt, dt, Vec2{}, exec);
+}
+
+bool same(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+}  // namespace
+
+TEST(EulerianSwitch, SwitchedSetIsFailedAndTheirReferenceNeighbours) {
+  SolidBody b = bar(20, 8);
+  const NeighbourList ref = b.topology.pairs;
+  fail_column(b, 20, 10);
+  ASSERT_TRUE(update_eulerian_switch(b, Executor(1)));
+  const EulerianState& e = b.eulerian;
+  const std::vector<double>& f = failed_field(b);
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    bool expect = f[i] > 0.5;
+    for (std::uint32_t k = ref.start[i]; k < ref.start[i + 1]; ++k)
+      expect = expect || f[ref.index[k]] > 0.5;
+    EXPECT_EQ(e.switched[i] != 0, expect) << i;
+    // No total-Lagrangian pair touches a switched particle.
+    for (std::uint32_t k = b.topology.pairs.start[i]; k < b.topology.pairs.start[i + 1]; ++k) {
+      EXPECT_FALSE(e.switched[i]) << i;
+      EXPECT_FALSE(e.switched[b.topology.pairs.index[k]]) << i;
+    }
+  }
+  EXPECT_GT(e.members.size(), 8u * 3u - 1u);  // the band and a neighbour column each side
+  // Eulerian pairs are symmetric and each has a switched end.
+  build_eulerian_pairs(b, b.x);
+  const NeighbourList& p = e.pairs;
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    for (std::uint32_t k = p.start[i]; k < p.start[i + 1]; ++k) {
+      const std::uint32_t j = p.index[k];
+      ++pairs;
+      EXPECT_TRUE(e.switched[i] || e.switched[j]);
+      const auto jb = p.index.begin() + p.start[j], je = p.index.begin() + p.start[j + 1];
+      EXPECT_EQ(std::count(jb, je, static_cast<std::uint32_t>(i)), 1) << i << " " << j;
+    }
+  EXPECT_GT(pairs, 0u);
+}
+
+TEST(EulerianSwitch, BodyWithoutFailureIsUntouched) {
+  SolidBody b = bar(20, 8);
+  const NeighbourList ref = b.topology.pairs;
+  EXPECT_FALSE(update_eulerian_switch(b, Executor(1)));
+  advance(b, 3, 2e-7, Executor(1));
+  EXPECT_FALSE(b.eulerian.active);
+  EXPECT_TRUE(b.eulerian.switched.empty());
+  EXPECT_EQ(b.topology.pairs.index, ref.index);
+}
+
+// A free body spinning at 2000 rad/s with a random velocity perturbation (±5 m/s) and a
+// failed column through its middle: 60 fluid steps of about 3 sub-steps.
+TEST(EulerianSwitch, FreeBodyKeepsLinearAndAngularMomentum) {
+  const int nx = 24, ny = 10;
+  SolidBody b = bar(nx, ny);
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-5.0, 5.0);
+  const Vec2 c{0.5 * nx * kDx, 0.5 * ny * kDx};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2 r = b.x[i] - c;
+    b.v[i] = Vec2{3.0, -1.0} + 2000.0 * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
+  }
+  fail_column(b, nx, 12);
+  refresh_internal_forces(b, Executor(1));
+  const Momenta m0 = momenta(b);
+  const double dt = 3.0 * stable_time_step(b);
+  advance(b, 60, dt, Executor(1));
+  ASSERT_TRUE(b.eulerian.active);
+  const Momenta m1 = momenta(b);
+  EXPECT_LT(norm(m1.p - m0.p), 1e-13 * m0.scale_p) << m1.p.x - m0.p.x << " " << m1.p.y - m0.p.y;
+  EXPECT_LT(std::abs(m1.l - m0.l), 1e-13 * m0.scale_l) << m1.l - m0.l;
+}
+
+// Halves of a 40 x 10 mm bar pulled apart at ±200 m/s across a failed column (failure
+// criterion off, so nothing else fails). With the switch the pieces separate: the gap between
+// the last particle of the left piece and the first of the right one exceeds the support 2h,
+// and the right piece's momentum stops changing. Without it the failed column still joins
+// the pieces through the total-Lagrangian sums of its neighbours and the right piece is
+// pulled back.
+struct Opening {
+  double gap = 0.0;          // min x of the right piece − max x of the left piece [m]
+  double late_change = 0.0;  // relative change of the right piece's momentum, last 20 µs
+  double kept = 0.0;         // right piece's momentum at the end / at the start
+};
+Opening pull_apart(bool with_switch) {
+  const int nx = 40, ny = 10, band = 20;
+  SolidBody b = bar(nx, ny);
+  b.eulerian_switch = with_switch;
+  auto right = [&](std::size_t i) { return static_cast<int>(i % nx) > band; };
+  auto left = [&](std::size_t i) { return static_cast<int>(i % nx) < band; };
+  for (std::size_t i = 0; i < b.size(); ++i)
+    b.v[i] = Vec2{right(i) ? 200.0 : (left(i) ? -200.0 : 0.0), 0.0};
+  fail_column(b, nx, band);
+  refresh_internal_forces(b, Executor(1));
+  auto p_right = [&] {
+    double p = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i)
+      if (right(i)) p += b.m[i] * b.v[i].x;
+    return p;
+  };
+  const double p0 = p_right();
+  const double dt = 1e-6;
+  advance(b, 40, dt, Executor(1));
+  const double p40 = p_right();
+  advance(b, 20, dt, Executor(1));
+  const double p60 = p_right();
+  Opening o;
+  double xl = -1e9, xr = 1e9;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (left(i)) xl = std::max(xl, b.x[i].x);
+    if (right(i)) xr = std::min(xr, b.x[i].x);
+  }
+  o.gap = xr - xl;
+  o.late_change = std::abs(p60 - p40) / p0;
+  o.kept = p60 / p0;
+  return o;
+}
+
+TEST(EulerianSwitch, CrackOpensWithTheSwitchAndNotWithout) {
+  const Opening with = pull_apart(true);
+  const Opening without = pull_apart(false);
+  const double support = 2.0 * 1.3 * kDx;
+  EXPECT_GT(with.gap, support) << "gap " << with.gap;
+  EXPECT_LT(with.late_change, 1e-3) << "the failed band still carries load";
+  EXPECT_GT(without.late_change, 10.0 * with.late_change);
+  EXPECT_LT(without.kept, with.kept);
+  std::printf("with switch: gap %.3f mm, momentum kept %.4f, late change %.2e\n", with.gap * 1e3,
+              with.kept, with.late_change);
+  std::printf("without:     gap %.3f mm, momentum kept %.4f, late change %.2e\n", without.gap * 1e3,
+              without.kept, without.late_change);
+}
+
+// 100 x 90 particles (a team of two) with a failed column, 1 vs 2 threads.
+TEST(EulerianSwitch, OneAndTwoThreadsBitIdentical) {
+  const int nx = 100, ny = 90;
+  auto run = [&](int threads) {
+    SolidBody b = bar(nx, ny);
+    for (std::size_t i = 0; i < b.size(); ++i)
+      b.v[i] = Vec2{static_cast<int>(i % nx) > 50 ? 100.0 : -100.0, 0.0};
+    fail_column(b, nx, 50);
+    refresh_internal_forces(b, Executor(1));
+    const Executor exec(threads);
+    EXPECT_EQ(exec.threads_for(b.size(), kSubstepParticlesPerThread), threads);
+    advance(b, 2, 4.0 * stable_time_step(b), exec);
+    EXPECT_TRUE(b.eulerian.active);
+    return b;
+  };
+  const SolidBody a = run(1), c = run(2);
+  std::size_t diff = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff += !(same(a.x[i].x, c.x[i].x) && same(a.x[i].y, c.x[i].y));
+    diff += !(same(a.v[i].x, c.v[i].x) && same(a.v[i].y, c.v[i].y));
+    diff += !(same(a.P[i].xx, c.P[i].xx) && same(a.P[i].xy, c.P[i].xy) &&
+              same(a.P[i].yy, c.P[i].yy) && same(a.F[i].yx, c.F[i].yx));
+    diff += !same(a.e[i], c.e[i]);
+  }
+  EXPECT_EQ(diff, 0u);
+  EXPECT_TRUE(same(a.dissipated, c.dissipated));
+}
