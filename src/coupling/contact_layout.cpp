@@ -1,6 +1,9 @@
 #include "coupling/contact_layout.h"
 
 #include <cmath>
+#include <span>
+
+#include "coupling/surface_normals.h"
 
 namespace slamsph {
 
@@ -68,6 +71,9 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
       }
       contact.normal[o + i] = n;
     }
+    // Faces opened by a crack: normals from the current configuration near failed particles.
+    if (body.kind == BodyKind::Elastic)
+      update_normals_near_failure(body, std::span<Vec2>(contact.normal).subspan(o, body.size()));
   }
   // Ghosts follow their parent along its current normal (coupling/ghost_layers.h).
   for (std::size_t g = 0; g < layout.ghosts.size(); ++g) {

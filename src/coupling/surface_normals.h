@@ -3,6 +3,7 @@
 // function, n_s ∝ -sum_j V_j grad_s W_sj, in the reference configuration; it is zero
 // inside the body where the colour gradient vanishes (|sum| h below a threshold).
 #pragma once
+#include <span>
 #include <vector>
 
 #include "core/kernel.h"
@@ -12,5 +13,16 @@ namespace slamsph {
 
 std::vector<Vec2> reference_surface_normals(const std::vector<Vec2>& X,
                                             const std::vector<double>& V0, const Kernel& kernel);
+
+struct SolidBody;
+
+// New surfaces of a cracked elastic body (spec §5; docs/model.md §4 "Leak counter"): every
+// particle whose reference position lies within two kernel supports of a failed particle's
+// (the failed and switched particles and their neighbours) gets the colour-gradient normal of
+// the current configuration, n ∝ −Σ_j V_j ∇W_ij over the body's
+// particles at their current positions x with their current volumes V0 det F, written into
+// normals[i] (zero inside, the same threshold as the reference normals). Others are left as
+// they are. No-op for a body none of whose particles has failed.
+void update_normals_near_failure(const SolidBody& body, std::span<Vec2> normals);
 
 }  // namespace slamsph

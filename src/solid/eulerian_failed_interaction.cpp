@@ -10,12 +10,6 @@
 namespace slamsph {
 namespace {
 
-int failed_slot(const SolidBody& body) {
-  for (std::size_t k = 0; k < body.history.fields.size(); ++k)
-    if (body.history.fields[k].name == "failed") return static_cast<int>(k);
-  return -1;
-}
-
 // A topology in which no particle has pairs (every particle switched).
 SolidTopology empty_topology(const SolidBody& body) {
   SolidTopology t;
@@ -46,12 +40,18 @@ Kernel pair_kernel(const SolidBody& body, std::size_t i, std::size_t j) {
 
 }  // namespace
 
+const std::vector<double>* failed_flags(const SolidBody& body) {
+  for (std::size_t k = 0; k < body.history.fields.size(); ++k)
+    if (body.history.fields[k].name == "failed") return &body.history.values[k];
+  return nullptr;
+}
+
 bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   EulerianState& e = body.eulerian;
   if (!body.eulerian_switch) return false;
-  const int slot = failed_slot(body);
-  if (slot < 0) return false;
-  const std::vector<double>& failed = body.history.values[static_cast<std::size_t>(slot)];
+  const std::vector<double>* flags = failed_flags(body);
+  if (flags == nullptr) return false;
+  const std::vector<double>& failed = *flags;
   const std::size_t n = body.size();
   std::size_t count = 0;
   for (double f : failed) count += f > 0.5 ? 1 : 0;

@@ -37,6 +37,9 @@ namespace slamsph {
 
 class Executor;
 
+// The law's `failed` history field of the body (1 = failed), or null if its law cannot fail.
+const std::vector<double>* failed_flags(const SolidBody& body);
+
 // Updates body.eulerian from the law's `failed` field (a no-op returning false for a body
 // whose law cannot fail or that has no failed particle). When the failed set has grown, the
 // switched set is recomputed and body.topology rebuilt over the intact particles; if that
