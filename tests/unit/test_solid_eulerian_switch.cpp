@@ -16,6 +16,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -158,6 +159,9 @@ TEST(EulerianSwitch, FreeBodyKeepsLinearAndAngularMomentum) {
   const Momenta m1 = momenta(b);
   EXPECT_LT(norm(m1.p - m0.p), 1e-13 * m0.scale_p) << m1.p.x - m0.p.x << " " << m1.p.y - m0.p.y;
   EXPECT_LT(std::abs(m1.l - m0.l), 1e-13 * m0.scale_l) << m1.l - m0.l;
+  std::printf("|dp|/sum m|v| = %.2e, |dL|/sum m|x||v| = %.2e, switched %zu of %zu\n",
+              norm(m1.p - m0.p) / m0.scale_p, std::abs(m1.l - m0.l) / m0.scale_l,
+              b.eulerian.members.size(), b.size());
 }
 
 // Halves of a 40 x 10 mm bar pulled apart at ±200 m/s across a failed column (failure
