@@ -24,6 +24,7 @@ SolidBody build_body(const CaseConfig& cfg, std::size_t index) {
   body.name = bc.name;
   body.kind = setup.kind;
   body.scheme = setup.scheme;
+  body.eulerian_switch = setup.eulerian_switch;
   body.dx = setup.dx;
   ParticleLattice lat;
   try {
@@ -125,6 +126,7 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   s.material =
       ElasticMaterialInput{mat->name,          mat->model,    mat->density, mat->youngs_modulus,
                            mat->poisson_ratio, mat->av_alpha, mat->av_beta, mat->hourglass};
+  s.eulerian_switch = bc.failed_particles == "eulerian";
   if (bc.initial_profile == "cantilever_mode") {
     // The parser requires exactly one clamp box with a cantilever mode.
     const double clamp_edge =

@@ -104,6 +104,10 @@ struct BodyConfig {
   // Optional initial velocity profile: "" or "cantilever_mode" (Gray et al. 2001, with
   // mode_vf and the clamp's free end at shape.box.max.x).
   std::string initial_profile;
+  // Failed particles (a material with failure): "lagrangian" keeps them in the
+  // total-Lagrangian sums; "eulerian" switches them to current-configuration pairs
+  // (solid/eulerian_failed_interaction.h; experimental, docs/model.md §7).
+  std::string failed_particles = "lagrangian";
   double mode_vf = 0.0;
   ClampConfig clamp;
   std::vector<MotionPoint> motion;  // rigid_prescribed: velocity table (linear in t)

@@ -47,6 +47,7 @@ const std::vector<std::string> kProbeKinds{
 const std::vector<std::string> kPlots{"",      "cylinder_entry", "dam_break",
                                       "plate", "gate",           "structure"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
+const std::vector<std::string> kFailedParticles{"lagrangian", "eulerian"};
 const std::vector<std::string> kModels{"svk", "j2_linear_hardening", "johnson_cook"};
 const std::vector<std::string> kFailures{"none", "johnson_cook", "critical_plastic_strain"};
 
@@ -570,7 +571,7 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
                                 "h_over_dx", "spacing_ratio", "velocity", "angular_velocity",
                                 "gravity",   "shape"};
   if (b.kind == "elastic")
-    keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp"});
+    keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp", "failed_particles"});
   else
     keys.push_back("density");
   if (b.kind == "rigid_prescribed") keys.push_back("motion");
@@ -634,6 +635,7 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
     b.density = mat->density;
     b.scheme = r.choice("scheme", kSchemes).value_or("tl_sfpm");
     b.initial_profile = r.choice("initial_profile", kProfiles).value_or("");
+    b.failed_particles = r.choice("failed_particles", kFailedParticles).value_or("lagrangian");
   } else {
     const auto d = r.number("density", "a positive density in kg/m^3");
     if (d) {

@@ -174,6 +174,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "gravity = " << b(bd.gravity) << "\n";
     if (bd.kind == "elastic") {
       o << "initial_profile = " << q(bd.initial_profile) << "\n";
+      o << "failed_particles = " << q(bd.failed_particles) << "\n";
       if (bd.initial_profile == "cantilever_mode")
         o << "mode_vf = " << d(bd.mode_vf) << "  # [m/s]\n";
     }

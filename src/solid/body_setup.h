@@ -39,6 +39,7 @@ struct BodySetup {
   std::string name;
   BodyKind kind = BodyKind::Elastic;
   SolidScheme scheme = SolidScheme::TlSfpm;  // elastic only
+  bool eulerian_switch = false;              // failed particles leave the TL sums (elastic)
   double dx = 0.0;                           // particle spacing [m]
   double h_over_dx = 1.3;                    // smoothing length ratio [-]
   KernelType kernel = KernelType::WendlandC2;
