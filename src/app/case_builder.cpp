@@ -112,6 +112,7 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   s.velocity = bc.velocity;
   s.angular_velocity = bc.angular_velocity;
   s.clamp_boxes = bc.clamp.boxes;
+  s.clamp_velocities = bc.clamp.velocities;
   s.clamp_layers = bc.clamp.layers;
   for (const MotionPoint& p : bc.motion) s.motion.push_back({p.t, p.v});
   s.mass = bc.mass;

@@ -108,8 +108,11 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
       if (b.kind == BodyKind::RigidPrescribed) he.push_back(b.name + " fluid_work [J/m]");
       if (b.kind != BodyKind::Elastic && b.kind != BodyKind::RigidFree) continue;
       for (const char* q : {"kinetic [J/m]", "strain [J/m]", "hourglass [J/m]", "dissipated [J/m]",
-                            "gravity_work [J/m]", "fluid_work [J/m]", "residual [J/m]"})
+                            "gravity_work [J/m]", "fluid_work [J/m]", "residual [J/m]"}) {
+        if (std::string(q) == "residual [J/m]" && has_moving_clamp(b))
+          he.push_back(b.name + " clamp_work [J/m]");  // only where a clamp moves
         he.push_back(b.name + " " + q);
+      }
     }
     he.insert(he.end(), {"fluid residual [J/m]", "residual [J/m]"});
     energy_csv_ = csv("energy.csv", he);
@@ -184,7 +187,8 @@ void Recorder::record_bodies() {
 
 // One row of energy.csv (README "Energy balance"). Fluid: R_f = Δ(K + V + U)_fluid + Σ W_fluid
 // over the moving bodies (the energy the water gave them). Each elastic or rigid_free body:
-// R_b = Δ(K + Ψ + E_hg) + D − W_gravity − W_fluid. The residual R = R_f + Σ R_b is what the
+// R_b = Δ(K + Ψ + E_hg) + D − W_gravity − W_fluid − W_clamps (the last only where a clamp
+// moves; its column is written only then). The residual R = R_f + Σ R_b is what the
 // discretisation lost (< 0) or made (> 0): mostly the Riemann solver's dissipation in the water.
 void Recorder::record_energy() {
   if (!energy_csv_) return;
@@ -203,11 +207,12 @@ void Recorder::record_energy() {
     if (b.kind != BodyKind::Elastic && b.kind != BodyKind::RigidFree) continue;
     const double w_gravity = energy0_[k + 1] - t.potential;
     const double w_fluid = t.external_work - w_gravity;
-    const double res =
-        t.kinetic + t.strain + t.hourglass - energy0_[k] + t.dissipated - w_gravity - w_fluid;
+    const double res = t.kinetic + t.strain + t.hourglass - energy0_[k] + t.dissipated - w_gravity -
+                       w_fluid - t.clamp_work;
     k += 2;
-    row.insert(row.end(),
-               {t.kinetic, t.strain, t.hourglass, t.dissipated, w_gravity, w_fluid, res});
+    row.insert(row.end(), {t.kinetic, t.strain, t.hourglass, t.dissipated, w_gravity, w_fluid});
+    if (has_moving_clamp(b)) row.push_back(t.clamp_work);
+    row.push_back(res);
     fluid_res += w_fluid;
     total += res;
   }

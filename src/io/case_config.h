@@ -79,6 +79,9 @@ struct ClampConfig {
   // Particles inside any box are held fixed. `box = {...}` in the case gives one box,
   // `boxes = [{...}, ...]` several (e.g. a plate clamped at both ends).
   std::vector<Box> boxes;
+  // Per box: the velocity its particles are moved at [m/s] (`velocity = [vx, vy]` in the
+  // box's table; 0 = held fixed). A prescribed grip motion, e.g. a specimen pulled apart.
+  std::vector<Vec2> velocities;
   std::vector<int> layers;  // ring layers held fixed (0 = innermost)
 };
 

@@ -667,8 +667,9 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
   if (auto cl = r.table("clamp", "a [body.clamp] table with box, boxes and/or layers")) {
     cl->allow({"box", "boxes", "layers"});
     if (auto bx = cl->table("box", "an inline table {min = [x, y], max = [x, y]}")) {
-      bx->allow({"min", "max"});
+      bx->allow({"min", "max", "velocity"});
       b.clamp.boxes.push_back(read_box(*bx));
+      b.clamp.velocities.push_back(vec(*bx, "velocity", "the grip velocity in m/s", Vec2{}));
       if (cl->has("boxes"))
         cl->bad("boxes", "give either box (one region) or boxes (a list), not both",
                 "boxes = [{min = [x, y], max = [x, y]}, ...] alone");
@@ -677,8 +678,9 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
     const std::vector<Reader> bxs = cl->table_array("boxes", list);
     if (cl->has("boxes") && bxs.empty()) cl->bad("boxes", "empty list", list);
     for (const Reader& bx : bxs) {
-      bx.allow({"min", "max"});
+      bx.allow({"min", "max", "velocity"});
       b.clamp.boxes.push_back(read_box(bx));
+      b.clamp.velocities.push_back(vec(bx, "velocity", "the grip velocity in m/s", Vec2{}));
     }
     if (auto ls = cl->int_list("layers", "an array of ring layer indices")) {
       if (b.shape.type != "ring")

@@ -241,15 +241,17 @@ std::string resolved_case_toml(const CaseConfig& c) {
     }
     if (bd.kind == "elastic" && (!bd.clamp.boxes.empty() || !bd.clamp.layers.empty())) {
       o << "\n[body.clamp]\n";
-      const auto box_text = [&](const Box& bx) {
-        return "{min = " + v2(bx.min) + ", max = " + v2(bx.max) + "}";
+      const auto box_text = [&](std::size_t i) {
+        const Box& bx = bd.clamp.boxes[i];
+        const Vec2 v = i < bd.clamp.velocities.size() ? bd.clamp.velocities[i] : Vec2{};
+        const std::string vel = v.x != 0.0 || v.y != 0.0 ? ", velocity = " + v2(v) : "";
+        return "{min = " + v2(bx.min) + ", max = " + v2(bx.max) + vel + "}";
       };
-      if (bd.clamp.boxes.size() == 1) o << "box = " << box_text(bd.clamp.boxes[0]) << "  # [m]\n";
+      if (bd.clamp.boxes.size() == 1) o << "box = " << box_text(0) << "  # [m], [m/s]\n";
       if (bd.clamp.boxes.size() > 1) {
         o << "boxes = [";
-        for (std::size_t i = 0; i < bd.clamp.boxes.size(); ++i)
-          o << (i ? ", " : "") << box_text(bd.clamp.boxes[i]);
-        o << "]  # [m]\n";
+        for (std::size_t i = 0; i < bd.clamp.boxes.size(); ++i) o << (i ? ", " : "") << box_text(i);
+        o << "]  # [m], [m/s]\n";
       }
       if (!bd.clamp.layers.empty()) {
         o << "layers = [";

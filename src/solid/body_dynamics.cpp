@@ -124,14 +124,18 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
     if (!(body.spacing[i] >= body.dx))
       throw InputError("body '" + cfg.name + "': dx must be the finest particle spacing");
   }
-  body.dissipated = body.hourglass_work = body.external_work = 0.0;
+  body.dissipated = body.hourglass_work = body.external_work = body.clamp_work = 0.0;
   body.last_substeps = 0;
 
   // Clamps.
   body.clamped.assign(n, 0);
+  body.clamp_velocity.assign(n, Vec2{});
   for (std::size_t i = 0; i < n; ++i) {
-    for (const Box& bx : cfg.clamp_boxes)
-      if (inside(bx, body.X[i])) body.clamped[i] = 1;
+    for (std::size_t k = 0; k < cfg.clamp_boxes.size(); ++k)
+      if (inside(cfg.clamp_boxes[k], body.X[i])) {
+        body.clamped[i] = 1;
+        if (k < cfg.clamp_velocities.size()) body.clamp_velocity[i] = cfg.clamp_velocities[k];
+      }
     for (int l : cfg.clamp_layers)
       if (body.layer[i] == l) body.clamped[i] = 1;
   }
@@ -214,7 +218,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
         body.v[i].y += cantilever_mode_velocity(body.X[i].x - cm.clamp_edge, cm.length, cm.vf, c0);
   }
   for (std::size_t i = 0; i < n; ++i)
-    if (body.clamped[i]) body.v[i] = Vec2{};
+    if (body.clamped[i]) body.v[i] = body.clamp_velocity[i];
 
   const Executor serial(1);
   try {

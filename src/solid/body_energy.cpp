@@ -49,10 +49,18 @@ double plastic_work(const SolidBody& body) {
       body.material.law);
 }
 
+bool has_moving_clamp(const SolidBody& body) {
+  for (std::size_t i = 0; i < body.clamp_velocity.size(); ++i)
+    if (body.clamped[i] && (body.clamp_velocity[i].x != 0.0 || body.clamp_velocity[i].y != 0.0))
+      return true;
+  return false;
+}
+
 BodyEnergyTerms body_energy_terms(const SolidBody& body, Vec2 gravity) {
   BodyEnergyTerms t;
   const Vec2 g = body.feels_gravity ? gravity : Vec2{};
   t.external_work = body.external_work;
+  t.clamp_work = body.clamp_work;
   if (body.is_elastic()) {
     const BodyEnergies e = body_energies(body);
     t.kinetic = e.kinetic;

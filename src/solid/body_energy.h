@@ -18,8 +18,11 @@ struct BodyEnergyTerms {
   double potential = 0.0;      // gravity: −Σ m g·x (rigid: −M g·x_com); 0 if the body
                                // does not feel gravity [J/m]
   double external_work = 0.0;  // work of gravity and the fluid since set-up [J/m]
+  double clamp_work = 0.0;     // work of moving clamps since set-up (0 if all held fixed) [J/m]
 };
 // `gravity` is the case's g; a body with feels_gravity = false sees none.
+// True if a clamp of the body moves (its work is then a term of the balance).
+bool has_moving_clamp(const SolidBody& body);
 BodyEnergyTerms body_energy_terms(const SolidBody& body, Vec2 gravity);
 
 // Plastic work of an elastic body since set-up [J/m]. J2 with linear hardening (flow stress

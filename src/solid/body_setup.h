@@ -43,12 +43,13 @@ struct BodySetup {
   double dx = 0.0;                           // particle spacing [m]
   double h_over_dx = 1.3;                    // smoothing length ratio [-]
   KernelType kernel = KernelType::WendlandC2;
-  double solid_cfl = 0.5;         // solid CFL number [-] (spec §3)
-  bool gravity = true;            // the body feels gravity
-  Vec2 velocity;                  // initial velocity [m/s]
-  double angular_velocity = 0.0;  // initial angular velocity about the centre of mass [rad/s]
-  std::vector<Box> clamp_boxes;   // particles inside any box are held fixed
-  std::vector<int> clamp_layers;  // ring layers held fixed (0 = innermost)
+  double solid_cfl = 0.5;              // solid CFL number [-] (spec §3)
+  bool gravity = true;                 // the body feels gravity
+  Vec2 velocity;                       // initial velocity [m/s]
+  double angular_velocity = 0.0;       // initial angular velocity about the centre of mass [rad/s]
+  std::vector<Box> clamp_boxes;        // particles inside any box are held fixed
+  std::vector<Vec2> clamp_velocities;  // per box, the grip velocity (empty or 0: fixed) [m/s]
+  std::vector<int> clamp_layers;       // ring layers held fixed (0 = innermost)
   std::optional<CantileverModeInput> cantilever_mode;  // elastic only
   std::vector<PrescribedVelocity> motion;              // rigid_prescribed velocity table
   std::optional<double> mass;                          // rigid_free [kg/m]

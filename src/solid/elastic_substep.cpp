@@ -38,23 +38,27 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const Vec2* const grad0 = topo.grad0.data();
   // Work of the sub-step whose half-step velocities are vh (spec §3 energy bookkeeping):
   // force at level n+1 times the synchronised velocity, external force over the drift.
+  // A moving clamp's reaction on its particle is −(f_int + f_ext) (the particle does not
+  // accelerate); its power at the clamp's constant velocity is the clamps' work.
   auto account = [&](std::span<const Vec2> vh) {
-    double diss = 0.0, hg = 0.0, ext = 0.0;
+    double diss = 0.0, hg = 0.0, ext = 0.0, grip = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       diss -= dot(body.f_av[i], body.v[i]);
       hg -= dot(body.f_hg[i], body.v[i]);
       ext += dot(w.fext[i], vh[i]);
+      if (body.clamped[i]) grip -= dot(body.f_int[i] + w.fext[i], body.clamp_velocity[i]);
     }
     body.dissipated += h * diss;
     body.hourglass_work += h * hg;
     body.external_work += h * ext;
+    body.clamp_work += h * grip;
   };
   // First half kick and drift of particle i from v and a into (vh, x).
   auto kick_drift = [&](std::size_t i, std::span<const Vec2> x, std::span<Vec2> vh_out,
                         std::span<Vec2> x_out) {
-    if (body.clamped[i]) {
-      vh_out[i] = Vec2{};
-      x_out[i] = body.X[i];
+    if (body.clamped[i]) {  // held fixed (x = X) or moved at the clamp's velocity
+      vh_out[i] = body.clamp_velocity[i];
+      x_out[i] = x[i] + h * vh_out[i];
       return;
     }
     vh_out[i] = body.v[i] + hh * body.a[i];
@@ -187,7 +191,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         body.f_hg[i] = fhg;
         body.f_int[i] = fs + fav + fhg;
         body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
-        body.v[i] = body.clamped[i] ? Vec2{} : vh[i] + hh * body.a[i];
+        body.v[i] = body.clamped[i] ? body.clamp_velocity[i] : vh[i] + hh * body.a[i];
         body.e[i] += h * (w.stress_power[i] + heat / body.m[i]);
         if (more) kick_drift(i, x, vhn, xn);
       }

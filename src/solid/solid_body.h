@@ -70,7 +70,8 @@ struct SolidBody {
   std::vector<double> V0;               // reference volume [m^2]
   std::vector<double> rho0;             // reference density [kg/m^3]
   std::vector<Vec2> f_fluid;            // fluid force on the particle, held over sub-steps [N/m]
-  std::vector<std::uint8_t> clamped;    // 1 = held fixed
+  std::vector<std::uint8_t> clamped;    // 1 = clamped: moved at clamp_velocity, not by forces
+  std::vector<Vec2> clamp_velocity;     // velocity of a clamped particle (0: held fixed) [m/s]
   std::vector<int> layer;               // ring layer through the thickness (-1 if none)
   std::vector<std::uint32_t> part;      // part id (index into part_names; 0 for one-part bodies)
   std::vector<double> spacing;          // the particle's own spacing (parts may differ) [m]
@@ -110,6 +111,7 @@ struct SolidBody {
                                 // is reported by body_energies; this is a cross-check)
   double external_work = 0.0;   // work done by gravity and the fluid force (rigid_prescribed:
                                 // the fluid force only; rigid_fixed: none)
+  double clamp_work = 0.0;      // work done on the body by moving clamps (their reactions)
 
   // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
   // clamps, layers; the topology) is rebuilt from the case by setup_body, so it is not persistent;
@@ -159,6 +161,7 @@ struct SolidBody {
     f("dissipated", s.dissipated);
     f("hourglass_work", s.hourglass_work);
     f("external_work", s.external_work);
+    f("clamp_work", s.clamp_work);
     f("last_substeps", s.last_substeps);
     f("material_updates", s.history.updates);
   }
