@@ -53,7 +53,7 @@ double failure_strain(double triax, double rate) {
 double triaxiality_of(const SolidBody& b, const JohnsonCook& law, std::size_t i) {
   const Mat2& F = b.F[i];
   const double J = det(F);
-  const Mat2 s = b.P[i] * transpose(F) * (1.0 / J);
+  const Mat2 s = (1.0 / J) * (b.P[i] * transpose(F));
   std::array<double, JohnsonCook::kSlots> h{};
   for (std::size_t k = 0; k < h.size(); ++k) h[k] = b.history.values[k][i];
   const double zz = law.cauchy_zz(F, h);
