@@ -13,8 +13,8 @@
 // SLAMSPH_NOTCHED_DX, SLAMSPH_NOTCHED_V (grip speed, m/s) and SLAMSPH_NOTCHED_AFTER (time run
 // after the first failure, s) override the resolution, the speed and the time after failure;
 // scripts/validate_notched.sh runs the case's own dx 0.25 mm and ±1 m/s this way.
-// Broken on purpose (docs/validation.md): D3 sign flipped, the triaxiality taken from the
-// trial instead of the returned stress, and σ_zz left out of the triaxiality each fail (a).
+// Broken on purpose (docs/validation.md): D3's sign flipped fails it (no failure within
+// end_time). Not yet tried: σ* from the trial stress, σ_zz left out of σ*.
 #include <gtest/gtest.h>
 
 #include <algorithm>
