@@ -26,7 +26,10 @@ means −3.6 %, −11.0 %, −10.5 %, +2.9 %, −0.6 %, −34 % (the last at ε�
 strain is NOT within the 5 % target in two slices, and the ccx mesh was not refined to show
 the reference converged. CPE8R elements must not be used here: their elastic wave arrived
 ~1.5x too early (end moving at 12 µs instead of the 16 µs P-wave head). Validation only,
-not a CI test.
+not a CI test. Session of issue 11's verification (docs/validation.md §5b): with the same
+ccx 50 x 5 result, slamsph dx 0.5 / 0.25 mm gives the displacement within 1.5 / 1.3 % and
+the plastic-strain integral along the bar -2.7 / -1.4 %, but the slice at 25-35 mm on the
+plastic front stays ~10 % low at every dx; ccx 100 x 10 could not be run (CPU).
 
 usage: scripts/calculix/jc_bar_dynamic.py SLAMSPH_BINARY WORKDIR [--quick] [--ccx-only] [--rerun]
 Environment: JC_T (end time, default 30e-6 s), JC_N (ccx steps = output times, default 10),
