@@ -8,6 +8,7 @@
 #include "core/box.h"
 #include "core/vec.h"
 #include "geometry/fuselage_shape.h"
+#include "geometry/polygon_lattice.h"
 
 namespace slamsph {
 
@@ -23,6 +24,8 @@ struct ShapeConfig {
   double outer_radius = 0.0;
   int layers = 0;  // ring: layers through the thickness; tank: wall layers (default 4)
   std::vector<Vec2> vertices;
+  // polygon: particles laid along the faces or the Cartesian lattice (geometry/polygon_lattice.h)
+  PolygonFill fill = PolygonFill::Cartesian;
   bool open_top = true;  // tank
   FuselageShape fuselage;
 };

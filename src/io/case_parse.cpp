@@ -38,6 +38,7 @@ std::vector<std::string> names_of(const Table& table) {
 }
 const std::vector<std::string> kKinds = names_of(kBodyKindNames);
 const std::vector<std::string> kSchemes = names_of(kSolidSchemeNames);
+const std::vector<std::string> kPolygonFills{"faces", "cartesian"};
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank", "fuselage"};
 const std::vector<std::string> kSections{"I", "L"};
 const std::vector<std::string> kProbeKinds{
@@ -515,7 +516,21 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx,
     s.layers = l ? static_cast<int>(*l) : 0;
     s.layers = ring_thickness_layers(s, dx);
   } else if (s.type == "polygon") {
-    r->allow({"type", "vertices"}, ctx);
+    r->allow({"type", "vertices", "fill"}, ctx);
+    // Particles laid along the faces by default for rigid bodies (a sloped face is a line,
+    // not a staircase: the wedge's force ripple, docs/validation.md); the Cartesian lattice
+    // for elastic ones, which refuse the face fill (its face/interior junction is not a
+    // regular TL-SFPM neighbourhood, docs/model.md §3).
+    const bool elastic = kind == "elastic";
+    const std::string fill =
+        r->choice("fill", kPolygonFills).value_or(elastic ? "cartesian" : "faces");
+    if (elastic && fill == "faces")
+      r->bad("fill",
+             "an elastic (TL-SFPM) body cannot use the face fill yet: the junction between its "
+             "face layers and the interior lattice has pairs at dx/2 and gaps of 1.5 dx, where "
+             "the solid's stable step collapses (docs/model.md §3)",
+             "fill = \"cartesian\" for an elastic body (or a rigid kind)", "\"faces\"");
+    s.fill = fill == "faces" ? PolygonFill::Faces : PolygonFill::Cartesian;
     const std::string e = "an array of >= 3 vertices [[x, y], ...] in m";
     const auto v = r->rows("vertices", 2, e);
     if (!v) r->missing("vertices", e);

@@ -205,6 +205,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
       o << "vertices = [";
       for (std::size_t i = 0; i < s.vertices.size(); ++i) o << (i ? ", " : "") << v2(s.vertices[i]);
       o << "]  # [m]\n";
+      o << "fill = " << q(s.fill == PolygonFill::Faces ? "faces" : "cartesian") << "\n";
     }
     if (s.type == "fuselage") {
       const FuselageShape& f = s.fuselage;

@@ -207,6 +207,41 @@ TEST(GeometryPolygon, RectangleExactTriangleConverges) {
   EXPECT_NEAR(min_pair_distance(t.x, 0.004), 0.002, 1e-12);
 }
 
+// Face fill (geometry/polygon_lattice.h, PolygonFill::Faces) on a rectangle, a clockwise
+// triangle, the 30-degree wedge of cases/wedge_constant_speed.toml and a chevron (one reflex
+// vertex): volumes sum to the exact area, every particle is inside at >= dx/2 from the
+// boundary, no pair is closer than kFaceFillMinGap dx, every volume is positive and below
+// 2 dx^2, and the surface layer lies on the lines parallel to the faces at dx/2.
+TEST(GeometryPolygonFaces, ExactAreaInsideMinimumGap) {
+  const double dx = 0.005;
+  const std::vector<std::vector<Vec2>> shapes{
+      {{0, 0}, {0.2, 0}, {0.2, 0.1}, {0, 0.1}},
+      {{0, 0}, {0.1, 0.2}, {0.3, 0}},
+      {{0.4, 0.415}, {0.5, 0.472735}, {0.5, 0.535}, {0.3, 0.535}, {0.3, 0.472735}},
+      {{0, 0}, {0.1, 0.06}, {0.2, 0}, {0.2, 0.1}, {0.1, 0.16}, {0, 0.1}}};
+  for (const auto& v : shapes) {
+    const ParticleLattice p = polygon(v, dx, PolygonFill::Faces);
+    const double a = polygon_area(v);
+    EXPECT_NEAR(p.total_volume(), a, 1e-12 * a);
+    EXPECT_GE(min_pair_distance(p.x, 2 * dx), kFaceFillMinGap * dx);
+    std::size_t surface = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      EXPECT_TRUE(point_in_polygon(p.x[i], v));
+      EXPECT_GE(polygon_boundary_distance(p.x[i], v), 0.5 * dx * (1 - 1e-9));
+      EXPECT_GT(p.volume[i], 0.0);
+      EXPECT_LT(p.volume[i], 2.0 * dx * dx);
+      if (p.layer[i] == 0) {
+        ++surface;
+        EXPECT_NEAR(polygon_boundary_distance(p.x[i], v), 0.5 * dx, 1e-9 * dx);
+      }
+    }
+    // Surface particles: about one per dx of perimeter (corners trim a few).
+    double perimeter = 0.0;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) perimeter += norm(v[i] - v[j]);
+    EXPECT_NEAR(static_cast<double>(surface), perimeter / dx, 0.1 * perimeter / dx);
+  }
+}
+
 TEST(GeometryBuildShape, DispatchMatchesBuilders) {
   ShapeConfig s;
   s.type = "tank";

@@ -442,3 +442,21 @@ TEST(IoCaseErrors, AbsorbingZoneIsChecked) {
   expect_error(no_tank, line_of(no_tank, "[fluid.absorbing_zone]"), "fluid.absorbing_zone.left",
                "the case has no tank");
 }
+
+// Polygon fill (docs/case_format.md): "faces" is refused on an elastic body (its face/interior
+// junction is not a regular TL-SFPM neighbourhood, docs/model.md §3) with the key's line;
+// an unknown value gets the choices.
+TEST(IoCaseErrors, PolygonFaceFillRefusedForElasticBodies) {
+  const std::string poly = replace_line(
+      replace_line(replace_line(kBase, "type = \"disc\"", "type = \"polygon\""),
+                   "centre = [0.5, 0.7]", "vertices = [[0.4, 0.7], [0.6, 0.7], [0.5, 0.8]]"),
+      "radius = 0.1", "fill = \"faces\"");
+  expect_error(poly, line_of(poly, "fill = "), "body[1].shape.fill", "elastic");
+  const std::string typo = replace_line(poly, "fill = \"faces\"", "fill = \"face\"");
+  expect_error(typo, line_of(typo, "fill = "), "body[1].shape.fill", "faces");
+  const std::string cart = replace_line(poly, "fill = \"faces\"", "fill = \"cartesian\"");
+  EXPECT_EQ(parse_case_string(cart, "x").bodies[1].shape.fill, PolygonFill::Cartesian);
+  // Without the key an elastic polygon gets the Cartesian lattice.
+  const std::string none = replace_line(poly, "fill = \"faces\"", "");
+  EXPECT_EQ(parse_case_string(none, "x").bodies[1].shape.fill, PolygonFill::Cartesian);
+}

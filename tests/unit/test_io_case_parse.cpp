@@ -257,6 +257,7 @@ TEST(IoCaseParse, FullCaseValues) {
   expect_vec(wedge.motion[1].v, {0.0, -2.5});
   ASSERT_EQ(wedge.shape.vertices.size(), 3u);
   expect_vec(wedge.shape.vertices[1], {0.3, 0.7});
+  EXPECT_EQ(wedge.shape.fill, PolygonFill::Faces);  // the default for a rigid polygon
 
   const BodyConfig& plate = c.bodies[3];
   EXPECT_EQ(plate.initial_profile, "cantilever_mode");
