@@ -527,8 +527,8 @@ ShapeConfig parse_shape(const Reader& body, const std::string& kind, double dx,
     if (elastic && fill == "faces")
       r->bad("fill",
              "an elastic (TL-SFPM) body cannot use the face fill yet: the junction between its "
-             "face layers and the interior lattice has pairs at dx/2 and gaps of 1.5 dx, where "
-             "the solid's stable step collapses (docs/model.md §3)",
+             "face layers and the interior lattice is not a regular TL-SFPM neighbourhood (pairs "
+             "at dx/2; docs/model.md §3, \"Polygon bodies\")",
              "fill = \"cartesian\" for an elastic body (or a rigid kind)", "\"faces\"");
     s.fill = fill == "faces" ? PolygonFill::Faces : PolygonFill::Cartesian;
     const std::string e = "an array of >= 3 vertices [[x, y], ...] in m";
