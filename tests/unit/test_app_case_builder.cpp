@@ -53,3 +53,15 @@ TEST(CaseBuilder, TranslatesBodiesAndLaysOutContact) {
   EXPECT_EQ(built.params.cfl, cfg.numerics.cfl);
   EXPECT_EQ(built.params.dual_time_stepping, cfg.numerics.dual_time_stepping);
 }
+
+// `failed_particles` reaches the built body: "eulerian" turns the Lagrangian → Eulerian
+// switch on (solid/eulerian_failed_interaction.h), the default keeps failed particles in the
+// total-Lagrangian sums.
+TEST(CaseBuilder, FailedParticlesChoiceReachesTheBody) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/johnson_cook_bar.toml");
+  ASSERT_EQ(cfg.bodies.at(0).failed_particles, "lagrangian");
+  EXPECT_FALSE(build_case(cfg).system.bodies.at(0).eulerian_switch);
+  cfg.bodies[0].failed_particles = "eulerian";
+  EXPECT_TRUE(body_setup_from_case(cfg, 0).eulerian_switch);
+  EXPECT_TRUE(build_case(cfg).system.bodies.at(0).eulerian_switch);
+}
