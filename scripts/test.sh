@@ -20,5 +20,5 @@ echo "== tests: unit, verification, regression"
 echo "== unit tier under ASan + UBSan"
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DSLAMSPH_WERROR=ON -DSLAMSPH_SANITIZE=ON \
   -DSLAMSPH_BENCH=OFF >/dev/null
-cmake --build build-asan -j"$jobs"
+cmake --build build-asan -j"$jobs" --target unit_tests
 (cd build-asan && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j"$jobs" -L unit --timeout 600)

@@ -9,7 +9,10 @@
 //    pieces end more than a kernel support apart and the right piece's momentum stops
 //    changing: the band carries no load) and stays connected without it;
 //  - 1 and 2 threads give bit-identical states on a body large enough for a team of two;
-//  - a body without failed particles is untouched (no Eulerian state, same topology).
+//  - a body without failed particles is untouched (no Eulerian state, same topology);
+//  - the fused sub-step's forces on a body with switched particles equal the standalone
+//    operators' (stress, viscosity, hourglass, then add_eulerian_forces, as internal_forces
+//    sums them): the Eulerian stress and viscous forces are not dropped from the fused loop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,12 +21,17 @@
 #include <cstdint>
 #include <cstdio>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "core/parallel.h"
+#include "solid/artificial_viscosity.h"
+#include "solid/body_dynamics.h"
 #include "solid/elastic_substep.h"
 #include "solid/eulerian_failed_interaction.h"
+#include "solid/hourglass_control.h"
 #include "solid/materials/material_presets.h"
+#include "solid/tl_pair_force.h"
 #include "test_solid_lattices.h"
 
 using namespace slamsph;
@@ -249,4 +257,50 @@ TEST(EulerianSwitch, OneAndTwoThreadsBitIdentical) {
   }
   EXPECT_EQ(diff, 0u);
   EXPECT_TRUE(same(a.dissipated, c.dissipated));
+}
+
+// One fused sub-step on a spinning, perturbed body with a failed column, then the same forces
+// from the operators at the sub-step's end state (x, F, P) and half-step velocity. Before
+// this test, dropping the Eulerian stress force from the fused loop passed every test here.
+TEST(EulerianSwitch, FusedSubstepForcesEqualTheOperators) {
+  const int nx = 24, ny = 10;
+  SolidBody b = bar(nx, ny);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> u(-5.0, 5.0);
+  const Vec2 c{0.5 * nx * kDx, 0.5 * ny * kDx};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2 r = b.x[i] - c;
+    b.v[i] = 1000.0 * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
+  }
+  fail_column(b, nx, 12);
+  const Executor exec(1);
+  ASSERT_TRUE(update_eulerian_switch(b, exec));
+  refresh_internal_forces(b, exec);
+  run_elastic_substeps(b, 1, 0.5 * stable_time_step(b), Vec2{}, exec);
+  const std::span<const Vec2> vh = b.substep.vhalf;  // the one sub-step's v½
+
+  const std::size_t n = b.size();
+  std::vector<Vec2> fs(n), fav(n), fhg(n), es(n), ev(n);
+  std::vector<double> heat(n), eq(n);
+  compute_stress_forces(b, b.topology, exec, fs);
+  compute_artificial_viscosity(b, b.topology, vh, exec, fav, heat);
+  compute_hourglass_forces(b, b.topology, b.material.hourglass, exec, fhg);
+  add_eulerian_forces(b, vh, exec, fs, fav, heat);
+  add_eulerian_forces(b, vh, exec, es, ev, eq);  // the Eulerian parts alone
+  double scale = 0.0, dev = 0.0, dev_av = 0.0, euler_s = 0.0, euler_v = 0.0, scale_v = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    scale = std::max(scale, norm(b.f_int[i]));
+    scale_v = std::max(scale_v, norm(fav[i]));
+    dev = std::max(dev, norm(b.f_int[i] - (fs[i] + fav[i] + fhg[i])));
+    dev_av = std::max(dev_av, norm(b.f_av[i] - fav[i]));
+    euler_s = std::max(euler_s, norm(es[i]));
+    euler_v = std::max(euler_v, norm(ev[i]));
+  }
+  std::printf("max |f_int| %.3e N, fused - operators %.2e, Eulerian stress %.3e, viscous %.3e N\n",
+              scale, dev, euler_s, euler_v);
+  // The Eulerian terms matter here (else the comparison could not see them dropped).
+  ASSERT_GT(euler_s, 1e-2 * scale);
+  ASSERT_GT(euler_v, 1e-2 * scale_v);
+  EXPECT_LT(dev, 1e-12 * scale);
+  EXPECT_LT(dev_av, 1e-12 * scale_v);
 }
