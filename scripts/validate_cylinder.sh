@@ -9,7 +9,9 @@
 #     0.05-0.25 and 0.05-0.15 against each reference, observed order and GCI (Roache, Fs 1.25
 #     if monotone, else 3) of the means;
 #  2. h = 1.3 dx against 1.38 at dx = 5 mm (the slamming force at the paper's h/dx);
-#  3. the rigid twin at dx = 5 mm; the dual time stepping against one global step.
+#  3. the rigid twin at dx = 5 mm; the dual time stepping against one global step;
+#  4. the tank echo: dx = 5 mm with a 0.1 m absorbing zone along the floor and both side
+#     walls against the bare tank, max |F_zone - F_bare| and max F per window of t - t0.
 # Usage: scripts/validate_cylinder.sh [THREADS=2] [OUT=results/validation_cylinder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,6 +43,8 @@ run dx2.5 "$el" 0.0025
 run dx5_h1.3 "$el" 0.005 --set numerics.h_over_dx=1.3
 run dx5_global "$el" 0.005 --set numerics.dual_time_stepping=false
 run rigid_dx5 cases/rigid_cylinder_entry.toml 0.005
+run dx5_zone "$el" 0.005 --set fluid.absorbing_zone.left=0.1 --set fluid.absorbing_zone.right=0.1 \
+  --set fluid.absorbing_zone.bottom=0.1
 
 python3 - "$out" <<'PY'
 import json, math, sys
@@ -76,6 +80,20 @@ for tag, ref in [("dx5_h1.3", "dx5"), ("dx5_global", "dx5")]:
     print(f"{tag} vs {ref}: peak {100 * (a['peak']['force_N_per_m'] / b['peak']['force_N_per_m'] - 1):+.2f} %, "
           f"mean Cs .05-.25 {100 * (window(S[tag], .05, .25)['Cs'] / window(S[ref], .05, .25)['Cs'] - 1):+.2f} %, "
           f"wall {S[tag]['wall_seconds']:.0f} vs {S[ref]['wall_seconds']:.0f} s")
+# Tank echo: the cylinder's Fy with and without the absorbing zone, per window of t - t0.
+import csv
+def fy(tag):
+    rows = list(csv.reader(open(f"{out}/{tag}/forces.csv")))
+    k = rows[0].index("cylinder Fy [N/m]")
+    t0 = json.load(open(f"{out}/{tag}/summary.json"))["validation"]["t0_geometric_contact_s"]
+    return [(float(r[0]) - t0, float(r[k])) for r in rows[1:]]
+bare, zone = fy("dx5"), fy("dx5_zone")
+print("tank echo (dx5_zone vs dx5): window t-t0 [ms] | max |dF| [N/m] | max F bare | max F zone")
+for lo, hi in [(-10, 10), (10, 15), (15, 20), (22.5, 25), (25, 30), (40, 50)]:
+    pairs = [(b, z) for (tb, b), (tz, z) in zip(bare, zone) if lo <= 1e3 * tb < hi]
+    if pairs:
+        print(f"  {lo:5.1f}-{hi:4.1f} | {max(abs(z - b) for b, z in pairs):8.2f} | "
+              f"{max(b for b, _ in pairs):7.1f} | {max(z for _, z in pairs):7.1f}")
 PY
 
 cat > "$out/convergence.gp" <<'GP'

@@ -230,6 +230,8 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
     throw InputError("body '" + cfg.name + "': " + e.what());
   }
   body.F.assign(n, Mat2::identity());
+  body.F_rebase.assign(n, Mat2::identity());
+  body.F_rebase_failed = 0;
   body.P.assign(n, Mat2{});
   body.e.assign(n, 0.0);
   body.history.reset(history_fields(sm.law), n, initial_history(sm.law));

@@ -134,10 +134,22 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             w.q_visc[rk] = q;
           }
         }
-        if (eulerian && body.eulerian.switched[i]) eulerian_motion(body, x, vh, h, i, F, Fdot);
+        // The material's F and Ḟ: the kinematic ones above (the hourglass control below
+        // keeps the kinematic F) times the map C that keeps F continuous across a switch's
+        // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
+        // neighbours.
+        Mat2 Fm = F;
+        if (eulerian) {
+          if (body.eulerian.switched[i]) {
+            eulerian_motion(body, x, vh, h, i, Fm, Fdot);
+          } else {
+            Fm = F * body.F_rebase[i];
+            Fdot = Fdot * body.F_rebase[i];
+          }
+        }
         const Mat2 F_old = body.F[i], P_old = body.P[i];
-        body.F[i] = F;
-        const Mat2 P = commit_stress_at(law, body.history, F_old, F, h, i);
+        body.F[i] = Fm;
+        const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
         body.P[i] = P;
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
         w.stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / body.rho0[i];

@@ -8,7 +8,7 @@ namespace slamsph {
 namespace {
 
 [[gnu::always_inline]] inline Vec2 pair_error(const SolidBody& body, std::size_t i, std::size_t j) {
-  return body.F[i] * (body.X[j] - body.X[i]) - (body.x[j] - body.x[i]);
+  return body.kinematic_F(i) * (body.X[j] - body.X[i]) - (body.x[j] - body.x[i]);
 }
 
 }  // namespace

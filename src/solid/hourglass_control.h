@@ -46,7 +46,7 @@ inline Mat2 hourglass_moment(const SolidBody& body, const SolidTopology& topo,
                              std::span<const Vec2> x, std::size_t i, Stiffness&& kappa,
                              std::span<Vec2> keps) {
   Mat2 g;
-  const Mat2 Fi = body.F[i];
+  const Mat2 Fi = body.kinematic_F(i);
   for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
     const std::uint32_t j = topo.pairs.index[k];
     const Vec2 Xij = body.X[j] - body.X[i];

@@ -83,6 +83,13 @@ struct SolidBody {
   // Elastic state (empty for rigid kinds).
   std::vector<Mat2> F;      // deformation gradient [-]
   std::vector<Mat2> P;      // first Piola–Kirchhoff stress [Pa]
+  // C with F = F_kin C, F_kin = Σ_j (x_j − x_i) ⊗ ∇W⁰_ij of the current topology [-]
+  // (elastic bodies). The identity until the Eulerian switch rebuilds the topology around
+  // failed particles; then F_kin⁻¹ F at the rebuild, so that F (and the stress and energy
+  // with it) stays continuous and changes as F_kin does from there on: F = (F_kin F_kin,s⁻¹) F_s,
+  // the kinematic deformation since the rebuild times F then (solid/eulerian_failed_interaction.h).
+  std::vector<Mat2> F_rebase;
+  std::uint64_t F_rebase_failed = 0;  // failed particles F_rebase was last set for
   std::vector<double> e;    // specific internal energy [J/kg]
   std::vector<Vec2> f_int;  // internal (stress + viscosity + hourglass) force [N/m]
   std::vector<Vec2> f_av;   // its artificial-viscosity part [N/m]
@@ -127,6 +134,7 @@ struct SolidBody {
     f(FieldSpec{"fluid_force", "N/m", true, true}, s.f_fluid);
     f(FieldSpec{"deformation_gradient", "-", true, true}, s.F);
     f(FieldSpec{"pk1_stress", "Pa", true, true}, s.P);
+    f(FieldSpec{"deformation_gradient_rebase", "-", true, false}, s.F_rebase);
     f(FieldSpec{"specific_internal_energy", "J/kg", true, false}, s.e);
     f(FieldSpec{"internal_force", "N/m", true, false}, s.f_int);
     f(FieldSpec{"viscous_force", "N/m", false, false}, s.f_av);
@@ -164,12 +172,18 @@ struct SolidBody {
     f("clamp_work", s.clamp_work);
     f("last_substeps", s.last_substeps);
     f("material_updates", s.history.updates);
+    f("deformation_gradient_rebase_failed", s.F_rebase_failed);
   }
 
   std::size_t size() const { return X.size(); }
   bool is_elastic() const { return kind == BodyKind::Elastic; }
   // Current particle volume (elastic bodies: V0 det F; rigid: V0).
   double volume(std::size_t i) const;
+  // The kinematic deformation gradient of the current topology, F C⁻¹ (F_rebase): what the
+  // hourglass control compares the pair vectors with.
+  Mat2 kinematic_F(std::size_t i) const {
+    return eulerian.active ? F[i] * inverse(F_rebase[i]) : F[i];
+  }
 };
 
 }  // namespace slamsph
