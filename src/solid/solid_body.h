@@ -81,20 +81,20 @@ struct SolidBody {
   std::vector<PrescribedVelocity> motion;  // rigid_prescribed velocity table
 
   // Elastic state (empty for rigid kinds).
-  std::vector<Mat2> F;  // deformation gradient [-]
-  std::vector<Mat2> P;  // first Piola–Kirchhoff stress [Pa]
+  std::vector<Mat2> F;      // deformation gradient [-]
+  std::vector<Mat2> P;      // first Piola–Kirchhoff stress [Pa]
+  std::vector<double> e;    // specific internal energy [J/kg]
+  std::vector<Vec2> f_int;  // internal (stress + viscosity + hourglass) force [N/m]
+  std::vector<Vec2> f_av;   // its artificial-viscosity part [N/m]
+  std::vector<Vec2> f_hg;   // its hourglass-control part [N/m]
+  MaterialHistory history;  // the law's per-particle history fields (none for SVK)
   // C with F = F_kin C, F_kin = Σ_j (x_j − x_i) ⊗ ∇W⁰_ij of the current topology [-]
   // (elastic bodies). The identity until the Eulerian switch rebuilds the topology around
   // failed particles; then F_kin⁻¹ F at the rebuild, so that F (and the stress and energy
   // with it) stays continuous and changes as F_kin does from there on: F = (F_kin F_kin,s⁻¹) F_s,
   // the kinematic deformation since the rebuild times F then (solid/eulerian_failed_interaction.h).
   std::vector<Mat2> F_rebase;
-  std::uint64_t F_rebase_failed = 0;  // failed particles F_rebase was last set for
-  std::vector<double> e;              // specific internal energy [J/kg]
-  std::vector<Vec2> f_int;            // internal (stress + viscosity + hourglass) force [N/m]
-  std::vector<Vec2> f_av;             // its artificial-viscosity part [N/m]
-  std::vector<Vec2> f_hg;             // its hourglass-control part [N/m]
-  MaterialHistory history;            // the law's per-particle history fields (none for SVK)
+  std::uint64_t F_rebase_failed = 0;  // the failed count F_rebase was last set for
 
   // Reference pairs and gradient weights (solid/solid_topology.h), built at set-up from X;
   // the solid operators take it as an explicit argument.
