@@ -24,6 +24,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const SolidMaterial& mat = body.material;
   SubstepWorkspace& w = body.substep;
   w.resize(n, topo.pairs.index.size());
+  if (body.eulerian.active) w.P_kin.resize(n);
   body.f_av.resize(n);
   body.f_hg.resize(n);
   const double alpha = mat.hourglass;
@@ -151,6 +152,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         body.F[i] = Fm;
         const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
         body.P[i] = P;
+        if (eulerian) w.P_kin[i] = body.kinematic_P(i);
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
         w.stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / body.rho0[i];
         if constexpr (kHourglass) {
@@ -171,16 +173,18 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       // over i's pairs, each sum in its own order), second half kick, internal energy; next
       // kick and drift.
       const bool more = step + 1 < steps;
+      // The stress of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+      const Mat2* const Pt = eulerian ? w.P_kin.data() : body.P.data();
       for (std::size_t i = b; i < e; ++i) {
         Vec2 fs, fav, grad;
         double heat = 0.0;
-        const Mat2 Pi = body.V0[i] * body.P[i];
+        const Mat2 Pi = body.V0[i] * Pt[i];
         const Mat2 Gi = kHourglass ? w.G[i] : Mat2{};
         for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
           const std::uint32_t j = index[k];
           const Vec2 gk = grad0[k], gr = w.g_rev[k];
           fs += Pi * gk;
-          fs -= body.V0[j] * (body.P[j] * gr);
+          fs -= body.V0[j] * (Pt[j] * gr);
           if constexpr (kViscous) {
             fav += w.f_visc[k];
             heat += w.q_visc[k];

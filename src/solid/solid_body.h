@@ -184,6 +184,11 @@ struct SolidBody {
   Mat2 kinematic_F(std::size_t i) const {
     return eulerian.active ? F[i] * inverse(F_rebase[i]) : F[i];
   }
+  // The stress conjugate to the kinematic F, P Cᵀ (P : Ḟ = P Cᵀ : Ḟ_kin for F = F_kin C):
+  // what the total-Lagrangian pair force takes, so that its power is the stress power.
+  Mat2 kinematic_P(std::size_t i) const {
+    return eulerian.active ? P[i] * transpose(F_rebase[i]) : P[i];
+  }
 };
 
 }  // namespace slamsph

@@ -33,6 +33,7 @@ struct SubstepWorkspace {
   std::vector<Vec2> vhalf_next;
   std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
+  std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
   void resize(std::size_t particles, std::size_t pairs) {
     kappa.resize(pairs);

@@ -18,14 +18,16 @@ namespace slamsph {
 
 class Executor;
 
-// Stress force on particle i from body.P over the pairs of `topo` [N/m].
+// Stress force on particle i from body.P over the pairs of `topo` [N/m]. After an Eulerian
+// switch's topology rebuild F = F_kin C (SolidBody::F_rebase) and the force takes P Cᵀ,
+// the stress conjugate to F_kin: the exact gradient of Σ_k V0_k Ψ(F_kin,k C_k).
 inline Vec2 stress_force_on(const SolidBody& body, const SolidTopology& topo, std::size_t i) {
   Vec2 sum;
-  const Mat2 Pi = body.V0[i] * body.P[i];
+  const Mat2 Pi = body.V0[i] * body.kinematic_P(i);
   for (std::uint32_t k = topo.pairs.start[i]; k < topo.pairs.start[i + 1]; ++k) {
     const std::uint32_t j = topo.pairs.index[k];
     sum += Pi * topo.grad0[k];
-    sum -= body.V0[j] * (body.P[j] * topo.grad0[topo.pair_reverse[k]]);
+    sum -= body.V0[j] * (body.kinematic_P(j) * topo.grad0[topo.pair_reverse[k]]);
   }
   return sum;
 }

@@ -273,8 +273,12 @@ TEST(EulerianSwitch, FusedSubstepForcesEqualTheOperators) {
     const Vec2 r = b.x[i] - c;
     b.v[i] = 1000.0 * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
   }
-  fail_column(b, nx, 12);
+  // Deformed non-affinely before the switch, so that the rebuild's C differs from 1.
+  std::uniform_real_distribution<double> ux(-0.03 * kDx, 0.03 * kDx);
+  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{ux(gen), ux(gen)};
   const Executor exec(1);
+  compute_deformation_gradients(b, b.topology, exec);
+  fail_column(b, nx, 12);
   ASSERT_TRUE(update_eulerian_switch(b, exec));
   refresh_internal_forces(b, exec);
   run_elastic_substeps(b, 1, 0.5 * stable_time_step(b), Vec2{}, exec);
@@ -349,4 +353,42 @@ TEST(EulerianSwitch, DeformationGradientIsContinuousAcrossTheRebuild) {
     err = std::max({err, std::abs(d.xx), std::abs(d.xy), std::abs(d.yx), std::abs(d.yy)});
   }
   EXPECT_LT(err, 1e-12) << "F does not follow the motion after the rebuild";
+}
+
+// After a rebuild F = F_kin C with C ≠ 1 (a perturbed bar, a failed column). The total-
+// Lagrangian stress force must be the gradient of Σ V0 Ψ(F_kin C), i.e. its power for any
+// velocity field equals minus the stress power Σ V0 P : (Ḟ_kin C) that goes into the internal
+// energy. With P instead of P Cᵀ in the pair sums the two differ by O(|C − 1|).
+TEST(EulerianSwitch, StressForceIsConjugateToTheRebasedF) {
+  const int nx = 24, ny = 10;
+  SolidBody b = bar(nx, ny);
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-0.05 * kDx, 0.05 * kDx);
+  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
+  const Executor exec(1);
+  compute_deformation_gradients(b, b.topology, exec);
+  fail_column(b, nx, 12);
+  ASSERT_TRUE(update_eulerian_switch(b, exec));
+  // A stressed state: P from the law at a further random deformation.
+  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
+  for (std::size_t i = 0; i < b.size(); ++i)
+    b.P[i] = Mat2{1e8 * (1.0 + u(gen) / kDx), 2e7 * u(gen) / kDx, 3e7 * u(gen) / kDx,
+                  -5e7 * (1.0 + u(gen) / kDx)};
+  std::vector<Vec2> v(b.size()), fs(b.size());
+  for (Vec2& vi : v) vi = Vec2{u(gen), u(gen)} / kDx;
+  compute_stress_forces(b, b.topology, exec, fs);
+  double force_power = 0.0, stress_power = 0.0, scale = 0.0, rebase = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    if (b.eulerian.switched[i]) continue;
+    force_power += dot(fs[i], v[i]);
+    const double sp = b.V0[i] * ddot(b.P[i], reference_gradient(b.topology, v, i) * b.F_rebase[i]);
+    stress_power += sp;
+    scale += std::abs(sp);
+    const Mat2 d = b.F_rebase[i] - Mat2::identity();
+    rebase = std::max({rebase, std::abs(d.xx), std::abs(d.xy), std::abs(d.yx), std::abs(d.yy)});
+  }
+  std::printf("max |C - 1| %.3e, force power %.6e W/m, stress power %.6e W/m\n", rebase,
+              force_power, stress_power);
+  ASSERT_GT(rebase, 1e-3);
+  EXPECT_LT(std::abs(force_power + stress_power), 1e-10 * scale);
 }
