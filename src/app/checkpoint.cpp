@@ -9,6 +9,7 @@
 #include "core/parallel.h"
 #include "io/case_file.h"
 #include "io/checkpoint_file.h"
+#include "solid/eulerian_failed_interaction.h"
 
 namespace slamsph {
 
@@ -225,6 +226,9 @@ RecorderResume read_checkpoint(const std::string& path, const CaseConfig& cfg, F
                          "' in the checkpoint, '" + sys.bodies[b].name + "' in the case");
       get_fields(r, sec, sys.bodies[b]);
       SolidBody::visit_scalars(sys.bodies[b], Get{r, sec});
+      // The Eulerian switch's topology is derived from the restored `failed` flags: rebuild it
+      // now, before anything (the energy row of the resume time) reads the topology.
+      if (sys.bodies[b].is_elastic()) update_eulerian_switch(sys.bodies[b], exec);
     }
     stepper.lists().restore(r.get<Vec2>("lists", "fluid_reference"),
                             r.get<Vec2>("lists", "contact_reference"),
