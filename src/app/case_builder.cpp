@@ -155,6 +155,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.viscosity = cfg.fluid.viscosity;
   p.cavitation_pressure = cfg.fluid.cavitation_pressure;
   p.hydrostatic_correction = cfg.fluid.hydrostatic_correction;
+  p.contact_barrier = cfg.fluid.contact_barrier;
   p.substep_average = num.substep_average;
   p.neighbour_skin = num.neighbour_skin;
   if (cfg.fluid.absorbing_zone.active()) {

@@ -32,8 +32,13 @@ void FsiStepper::evaluate_rates() {
   lists_->update(fluid, contact, exec_);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};
-  const ContactParams cp{sys_.eos.c0,  prm_.limiter_omega,       prm_.viscosity,
-                         prm_.gravity, prm_.cavitation_pressure, prm_.hydrostatic_correction};
+  const ContactParams cp{sys_.eos.c0,
+                         prm_.limiter_omega,
+                         prm_.viscosity,
+                         prm_.gravity,
+                         prm_.cavitation_pressure,
+                         prm_.hydrostatic_correction,
+                         prm_.contact_barrier ? sys_.eos.stiffness() : 0.0};
   if (fluid.size() > 0) {
     compute_virtual_state(contact, fluid, lists_->cf(), sys_.kernel_c, sys_.eos, prm_.gravity,
                           exec_);

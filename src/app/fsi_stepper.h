@@ -53,6 +53,8 @@ struct FsiParams {
   // Lowest contact star pressure before the water separates (docs/model.md §4) [Pa].
   double cavitation_pressure = -101325.0;
   bool hydrostatic_correction = true;  // static state in the Riemann U* (docs/model.md §2)
+  // Short-range fluid-solid barrier at the water's stiffness (docs/model.md §4).
+  bool contact_barrier = true;
   // The fluid sees sub-cycled bodies' velocity and acceleration averaged over the fluid step
   // (coupling/substep_average.h) instead of those of the last sub-step.
   bool substep_average = true;

@@ -26,7 +26,7 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
       if (!c.wetted[s] || !c.faces(s, f.x[i])) continue;
       const ContactPairResult r =
           contact_pair<kViscous>(pair_input(f, i, c, s, prm), kernel, prm.c0, prm.omega,
-                                 prm.viscosity, prm.cavitation_pressure);
+                                 prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
       if (!r.active) continue;
       force += r.force + r.force_viscous;
       drho += r.drho_term;
@@ -47,7 +47,7 @@ void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList&
         if (!c.faces(s, f.x[i])) continue;
         const ContactPairResult r =
             contact_pair<kViscous>(pair_input(f, i, c, s, prm), kernel, prm.c0, prm.omega,
-                                   prm.viscosity, prm.cavitation_pressure);
+                                   prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
         if (!r.active) continue;
         force -= r.force + r.force_viscous;
         visc -= r.force_viscous;

@@ -20,6 +20,8 @@ struct ContactParams {
   // Lowest star pressure before the water separates (FluidConfig::cavitation_pressure).
   double cavitation_pressure = -101325.0;
   bool hydrostatic_correction = true;  // static state (g - a_s) . r in U*; false: none
+  // Stiffness of the short-range barrier (contact_pair.h, contact_barrier_force) [Pa]; 0 = off.
+  double barrier_pressure = 0.0;
 };
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,

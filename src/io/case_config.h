@@ -57,6 +57,9 @@ struct FluidConfig {
   // Static-state (hydrostatic) term in the Riemann U* of fluid pairs and of the contact
   // (docs/model.md §2): right at rest under gravity, wrong away from it (free fall).
   bool hydrostatic_correction = true;
+  // Short-range fluid-solid barrier (docs/model.md §4): a repulsion inside half the rest
+  // distance of a fluid and a body particle; false only to show what it prevents.
+  bool contact_barrier = true;
   AbsorbingZoneConfig absorbing_zone;
   std::vector<FluidBlockConfig> blocks;
 };

@@ -200,7 +200,7 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
   auto r = root.table("fluid", "a [fluid] table");
   if (!r) return f;
   r->allow({"density", "sound_speed", "gamma", "limiter_omega", "viscosity", "cavitation_pressure",
-            "hydrostatic_correction", "absorbing_zone", "block"});
+            "hydrostatic_correction", "contact_barrier", "absorbing_zone", "block"});
   f.density = num(*r, "density", positive("a positive density in kg/m^3"), 1000.0);
   f.sound_speed = num(*r, "sound_speed", positive("a positive sound speed in m/s"));
   f.gamma = num(*r, "gamma", {1.0, kInf, false, false, "a Tait exponent >= 1"}, 7.0);
@@ -210,6 +210,7 @@ FluidConfig parse_fluid(const Reader& root, const NumericsConfig& n, std::vector
       num(*r, "cavitation_pressure",
           {-kInf, 0.0, false, false, "a gauge pressure <= 0 in Pa (e.g. -101325)"}, -101325.0);
   f.hydrostatic_correction = r->boolean("hydrostatic_correction").value_or(true);
+  f.contact_barrier = r->boolean("contact_barrier").value_or(true);
   if (auto z = r->table("absorbing_zone", "a table [fluid.absorbing_zone] with wall widths")) {
     z->allow({"left", "right", "bottom", "top", "strength"});
     AbsorbingZoneConfig& a = f.absorbing_zone;

@@ -96,6 +96,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
     o << "viscosity = " << d(f.viscosity) << "  # [m^2/s]\n";
     o << "cavitation_pressure = " << d(f.cavitation_pressure) << "  # [Pa] gauge\n";
     o << "hydrostatic_correction = " << b(f.hydrostatic_correction) << "\n";
+    o << "contact_barrier = " << b(f.contact_barrier) << "\n";
     if (f.absorbing_zone.active()) {
       const AbsorbingZoneConfig& z = f.absorbing_zone;
       o << "\n[fluid.absorbing_zone]\n";
