@@ -263,3 +263,90 @@ radius = 0.06
     EXPECT_LT(norm(dp), 1e-10 * scale) << kind;
   }
 }
+
+namespace {
+
+// A rigid two-layer skin (1.5 mm spacing, r = 4) across a 0.24 m tank of water (dx = 6 mm,
+// h = 1.3 dx, c0 = 65 m/s, the fuselage cases' water) pulled up at `pull` m/s: the water
+// under it is in tension, as under the rebounding skin_cylinder keel (-23 kPa there).
+std::string piston_case(double pull) {
+  const std::string v = std::to_string(pull);
+  return R"(
+schema_version = 1
+name = "piston"
+[numerics]
+dx = 0.006
+h_over_dx = 1.3
+end_time = 0.01
+gravity = [0.0, -9.81]
+[numerics.domain]
+min = [-0.1, -0.1]
+max = [0.4, 0.5]
+[fluid]
+density = 1000.0
+sound_speed = 65.0
+[[fluid.block]]
+min = [0.0, 0.0]
+max = [0.24, 0.12]
+[[body]]
+name = "tank"
+kind = "rigid_fixed"
+[body.shape]
+type = "tank"
+min = [0.0, 0.0]
+max = [0.24, 0.3]
+[[body]]
+name = "skin"
+kind = "rigid_prescribed"
+spacing_ratio = 4
+motion = [[0.0, 0.0, )" +
+         v + R"(]]
+[body.shape]
+type = "rectangle"
+min = [0.0, 0.1205]
+max = [0.24, 0.1235]
+)";
+}
+
+}  // namespace
+
+TEST(SpacingRatio, WaterUnderTensionIsNotPulledIntoAFineSkin) {
+  // The first water row starts 3.75 mm below the skin's lower layer; every other particle of
+  // it is moved `shift` towards the skin, as the lattice noise of the h = 1.3 dx water does
+  // under the keel. Under tension the contact is anti-restoring (docs/model.md §4, "Short-range
+  // barrier"): without the barrier the shifted particles are drawn into the skin.
+  struct Run {
+    bool barrier;
+    double pull;
+  };
+  for (const Run run : {Run{false, 0.0}, Run{false, 0.6}, Run{true, 0.6}}) {
+    const bool barrier = run.barrier;
+    CaseConfig cfg = parse_case_string(piston_case(run.pull), "piston.toml");
+    cfg.fluid.contact_barrier = barrier;
+    Simulation sim(cfg, silent_options(1));
+    FluidParticles& f = sim.fluid();
+    long shifted = 0;
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f.x[i].y > 0.114 && static_cast<long>(std::lround(f.x[i].x / 0.006)) % 2 == 0) {
+        f.x[i].y += 0.002;
+        ++shifted;
+      }
+    double min_gap = 1.0;
+    while (sim.time() < cfg.numerics.end_time) {
+      sim.step();
+      const double skin_bottom = sim.bodies()[1].x[0].y;
+      for (std::size_t i = 0; i < f.size(); ++i)
+        min_gap = std::min(min_gap, skin_bottom - f.x[i].y);
+    }
+    std::printf(
+        "barrier %s, pull %.1f m/s: %ld shifted, leaked %ld, closest water below the skin's lower "
+        "layer %.2f mm\n",
+        barrier ? "on" : "off", run.pull, shifted, sim.leaked_particles(), 1e3 * min_gap);
+    if (barrier) {
+      EXPECT_EQ(sim.leaked_particles(), 0);
+      EXPECT_GT(min_gap, 0.9e-3);  // stays outside the skin's lower face (0.75 mm)
+    } else if (run.pull > 0.0) {
+      EXPECT_GT(sim.leaked_particles(), 0) << "the defect the barrier removes is no longer shown";
+    }
+  }
+}
