@@ -17,7 +17,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_cylinder_entry test_app_coupling test_app_still_water"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -46,11 +46,13 @@ M = [
  ("fluid limiter: full acoustic dissipation", "src/fluid/gsph_fluid_rates.cpp",
   "const double beta = std::min(omega * std::max(du, 0.0), c0);", "const double beta = c0 + 0.0 * omega * du;"),
  ("contact force sign flipped", "src/coupling/contact_pair.h",
-  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;", "out.force = (2.0 * in.Vi * in.Vs * p_star * dwr) * dx;"),
+  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx +", "out.force = (2.0 * in.Vi * in.Vs * p_star * dwr) * dx +"),
+ ("short-range contact barrier off", "src/coupling/contact_pair.h",
+  "  if (p_barrier <= 0.0 || r >= r0) return Vec2{};", "  return Vec2{};"),
  ("ghost layers removed", "src/coupling/ghost_layers.cpp",
   "  if (X.empty()) return out;", "  return out;"),
  ("contact force halved", "src/coupling/contact_pair.h",
-  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx;", "out.force = (-1.0 * in.Vi * in.Vs * p_star * dwr) * dx;"),
+  "out.force = (-2.0 * in.Vi * in.Vs * p_star * dwr) * dx +", "out.force = (-1.0 * in.Vi * in.Vs * p_star * dwr) * dx +"),
  ("no Riemann dissipation in the contact", "src/coupling/contact_pair.h",
   "solve_riemann(L, R, c0, omega, dp_static);", "solve_riemann(L, R, c0, 0.0 * omega, dp_static);"),
  ("no (g - a) term in the virtual pressure", "src/coupling/virtual_pressure.cpp",
