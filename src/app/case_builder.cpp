@@ -150,6 +150,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.dt_floor = num.dt_floor;
   p.end_time = num.end_time;
   p.dual_time_stepping = num.dual_time_stepping;
+  p.fluid_force_correction = num.fluid_force_correction;
   p.domain = num.domain;
   p.limiter_omega = cfg.fluid.limiter_omega;
   p.viscosity = cfg.fluid.viscosity;

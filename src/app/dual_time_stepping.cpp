@@ -5,21 +5,46 @@
 
 namespace slamsph {
 
+bool DualTimeStepping::corrects_later(const SolidBody& body) const {
+  return subcycled_ && body.is_elastic() && correction_ != FluidForceCorrection::Kick;
+}
+
 long DualTimeStepping::advance(std::vector<SolidBody>& bodies, double t, double dt, Vec2 gravity,
-                               const Executor& exec) {
+                               bool subcycled, const Executor& exec) {
+  subcycled_ = subcycled;
   long substeps = 0;
   f_held_.resize(bodies.size());  // reused storage
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    f_held_[b] = bodies[b].f_fluid;
-    advance_body(bodies[b], t, dt, gravity, exec);
-    if (bodies[b].is_elastic()) substeps += bodies[b].last_substeps;
+    SolidBody& body = bodies[b];
+    f_held_[b] = body.f_fluid;
+    // NextStep: the impulse still due from the last step is held as a force over this one
+    // (its work is then counted with the fluid's, force times drift, by the sub-steps).
+    const bool deliver = corrects_later(body) && correction_ == FluidForceCorrection::NextStep;
+    if (deliver) {
+      body.impulse_due.resize(body.size());
+      for (std::size_t i = 0; i < body.size(); ++i) {
+        body.f_fluid[i] += (1.0 / dt) * body.impulse_due[i];
+        body.impulse_due[i] = Vec2{};
+      }
+    }
+    advance_body(body, t, dt, gravity, exec);
+    if (deliver) body.f_fluid = f_held_[b];
+    if (body.is_elastic()) substeps += body.last_substeps;
   }
   return substeps;
 }
 
 void DualTimeStepping::correct(std::vector<SolidBody>& bodies, double dt) const {
-  for (std::size_t b = 0; b < bodies.size(); ++b)
-    correct_for_new_fluid_force(bodies[b], f_held_[b], dt);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    SolidBody& body = bodies[b];
+    if (!corrects_later(body)) {
+      correct_for_new_fluid_force(body, f_held_[b], dt);
+    } else if (correction_ == FluidForceCorrection::NextStep) {
+      body.impulse_due.resize(body.size());
+      for (std::size_t i = 0; i < body.size(); ++i)
+        if (!body.clamped[i]) body.impulse_due[i] += (0.5 * dt) * (body.f_fluid[i] - f_held_[b][i]);
+    }
+  }
 }
 
 }  // namespace slamsph

@@ -3,13 +3,16 @@
 // own stable step (solid/body_dynamics.h: n = ceil(Δt / Δt_s) equal sub-steps); after the
 // fluid pass gives F_n+1, each body is kicked by Δt/2 (F_n+1 - F_n)
 // (coupling/fluid_force_correction.h), so it receives exactly the impulse the fluid gave
-// up. With the switch off (or no fluid to sub-cycle within) the bodies' stable steps join
-// the fluid step's limit (app/time_step_limit.h) and every body takes one step per fluid
-// step: the global-step scheme.
+// up. numerics.fluid_force_correction can instead give a sub-cycled elastic body that impulse
+// as a force held over the next fluid step ("next_step", through SolidBody::impulse_due) or
+// not at all ("none"); coupling/force_correction_kind.h, docs/model.md §5. With the switch off (or
+// no fluid to sub-cycle within) the bodies' stable steps join the fluid step's limit
+// (app/time_step_limit.h) and every body takes one step per fluid step: the global-step scheme.
 #pragma once
 #include <vector>
 
 #include "core/vec.h"
+#include "coupling/force_correction_kind.h"
 #include "solid/solid_body.h"
 
 namespace slamsph {
@@ -18,15 +21,17 @@ class Executor;
 
 class DualTimeStepping {
  public:
-  explicit DualTimeStepping(bool enabled) : enabled_(enabled) {}
+  DualTimeStepping(bool enabled, FluidForceCorrection correction)
+      : enabled_(enabled), correction_(correction) {}
 
   // Whether the bodies' stable steps limit the fluid step (no sub-cycling).
   bool bodies_share_step(std::size_t fluid_particles) const {
     return !enabled_ || fluid_particles == 0;
   }
   // Advances every body over [t, t + dt] with its current f_fluid held (remembered for
-  // correct()); returns the number of elastic sub-steps taken.
-  long advance(std::vector<SolidBody>& bodies, double t, double dt, Vec2 gravity,
+  // correct()), plus the impulse still due to it (NextStep); `subcycled` is
+  // !bodies_share_step(). Returns the number of elastic sub-steps taken.
+  long advance(std::vector<SolidBody>& bodies, double t, double dt, Vec2 gravity, bool subcycled,
                const Executor& exec);
   // After the bodies' f_fluid was replaced by the new evaluation.
   void correct(std::vector<SolidBody>& bodies, double dt) const;
@@ -34,6 +39,10 @@ class DualTimeStepping {
  private:
   bool enabled_;
   std::vector<std::vector<Vec2>> f_held_;  // the fluid force each body was advanced with
+  FluidForceCorrection correction_;
+  bool subcycled_ = false;  // of the last advance()
+  // Whether `body` gets its correction later or never rather than as the kick.
+  bool corrects_later(const SolidBody& body) const;
 };
 
 }  // namespace slamsph

@@ -13,7 +13,10 @@
 namespace slamsph {
 
 FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor& exec)
-    : prm_(params), sys_(std::move(system)), exec_(exec), dual_(params.dual_time_stepping) {
+    : prm_(params),
+      sys_(std::move(system)),
+      exec_(exec),
+      dual_(params.dual_time_stepping, params.fluid_force_correction) {
   const double skin = prm_.neighbour_skin * sys_.kernel_c.support();
   lists_ =
       std::make_unique<InteractionLists>(sys_.kernel_f.support(), sys_.kernel_c.support(), skin);
@@ -92,7 +95,8 @@ void FsiStepper::step() {
   const bool average = prm_.substep_average && !dual_.bodies_share_step(f.size());
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
-  solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity, exec_);
+  solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity,
+                                   !dual_.bodies_share_step(f.size()), exec_);
   // A body that blew up during its sub-steps is reported here, as a divergence with the
   // particle, before the neighbour rebuild in evaluate_rates() meets non-finite positions.
   check_bodies(time_ + dt);

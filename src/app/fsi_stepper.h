@@ -29,6 +29,7 @@
 #include "core/kernel.h"
 #include "coupling/contact_layout.h"
 #include "coupling/contact_particles.h"
+#include "coupling/force_correction_kind.h"
 #include "coupling/interaction_lists.h"
 #include "coupling/substep_average.h"
 #include "fluid/absorbing_zone.h"
@@ -47,9 +48,11 @@ struct FsiParams {
   double dt_floor = 1e-9;          // a step below this is divergence [s]
   double end_time = 0.0;           // [s] (only for the step of a case where nothing moves)
   bool dual_time_stepping = true;  // sub-cycle bodies inside a fluid step (spec §6)
-  Box domain;                      // a particle leaving it is divergence [m]
-  double limiter_omega = 3.0;      // low-dissipation limiter ω (spec §2) [-]
-  double viscosity = 0.0;          // kinematic viscosity [m^2/s]
+  // How sub-cycled elastic bodies receive dt/2 (F_n+1 - F_n) (coupling/fluid_force_correction.h).
+  FluidForceCorrection fluid_force_correction = FluidForceCorrection::Kick;
+  Box domain;                  // a particle leaving it is divergence [m]
+  double limiter_omega = 3.0;  // low-dissipation limiter ω (spec §2) [-]
+  double viscosity = 0.0;      // kinematic viscosity [m^2/s]
   // Lowest contact star pressure before the water separates (docs/model.md §4) [Pa].
   double cavitation_pressure = -101325.0;
   bool hydrostatic_correction = true;  // static state in the Riemann U* (docs/model.md §2)

@@ -65,6 +65,7 @@ Vec2 Simulation::total_momentum() const {
       continue;
     }
     for (std::size_t i = 0; i < b.size(); ++i) p += b.m[i] * b.v[i];
+    for (const Vec2& d : b.impulse_due) p += d;
   }
   return p;
 }

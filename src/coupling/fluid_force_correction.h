@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/vec.h"
+#include "coupling/force_correction_kind.h"
 #include "solid/solid_body.h"
 
 namespace slamsph {

@@ -11,6 +11,7 @@
 #include "core/box.h"
 #include "core/kernel.h"
 #include "core/vec.h"
+#include "coupling/force_correction_kind.h"
 #include "geometry/shape.h"
 #include "solid/materials/material_law.h"
 
@@ -27,8 +28,10 @@ struct NumericsConfig {
   double neighbour_skin = 0.2;     // Verlet skin as a fraction of the kernel support [-]
   bool substep_average = true;     // fluid sees sub-step averaged body kinematics (spec §6)
   bool dual_time_stepping = true;  // sub-cycle solids inside a fluid step (spec §6)
-  double dt_floor = 1e-9;          // a step below this is divergence [s]
-  Box domain;                      // a particle leaving this box is divergence [m] (required)
+  // How sub-cycled elastic bodies get dt/2 (F_n+1 - F_n) (coupling/fluid_force_correction.h).
+  FluidForceCorrection fluid_force_correction = FluidForceCorrection::Kick;
+  double dt_floor = 1e-9;  // a step below this is divergence [s]
+  Box domain;              // a particle leaving this box is divergence [m] (required)
 };
 
 struct FluidBlockConfig {

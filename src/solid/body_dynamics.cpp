@@ -114,6 +114,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   body.v.assign(n, Vec2{});
   body.a.assign(n, Vec2{});
   body.f_fluid.assign(n, Vec2{});
+  body.impulse_due.assign(n, Vec2{});
   if (body.layer.size() != n) body.layer.assign(n, -1);
   if (body.part.size() != n) body.part.assign(n, 0);
   if (body.spacing.size() != n) body.spacing.assign(n, body.dx);

@@ -62,14 +62,17 @@ struct SolidBody {
   bool feels_gravity = true;
 
   // Per particle.
-  std::vector<Vec2> X;                  // reference position [m]
-  std::vector<Vec2> x;                  // current position [m]
-  std::vector<Vec2> v;                  // velocity [m/s]
-  std::vector<Vec2> a;                  // acceleration [m/s^2]
-  std::vector<double> m;                // mass [kg/m]
-  std::vector<double> V0;               // reference volume [m^2]
-  std::vector<double> rho0;             // reference density [kg/m^3]
-  std::vector<Vec2> f_fluid;            // fluid force on the particle, held over sub-steps [N/m]
+  std::vector<Vec2> X;        // reference position [m]
+  std::vector<Vec2> x;        // current position [m]
+  std::vector<Vec2> v;        // velocity [m/s]
+  std::vector<Vec2> a;        // acceleration [m/s^2]
+  std::vector<double> m;      // mass [kg/m]
+  std::vector<double> V0;     // reference volume [m^2]
+  std::vector<double> rho0;   // reference density [kg/m^3]
+  std::vector<Vec2> f_fluid;  // fluid force on the particle, held over sub-steps [N/m]
+  // Part of the fluid's impulse not yet given to the particle (app/dual_time_stepping.h:
+  // a sub-cycled elastic body receives the end-of-step correction over later steps) [N s/m].
+  std::vector<Vec2> impulse_due;
   std::vector<std::uint8_t> clamped;    // 1 = clamped: moved at clamp_velocity, not by forces
   std::vector<Vec2> clamp_velocity;     // velocity of a clamped particle (0: held fixed) [m/s]
   std::vector<int> layer;               // ring layer through the thickness (-1 if none)
@@ -132,6 +135,7 @@ struct SolidBody {
     f(FieldSpec{"velocity", "m/s", true, true}, s.v);
     f(FieldSpec{"acceleration", "m/s^2", true, false}, s.a);
     f(FieldSpec{"fluid_force", "N/m", true, true}, s.f_fluid);
+    f(FieldSpec{"fluid_impulse_due", "N s/m", true, false}, s.impulse_due);
     f(FieldSpec{"deformation_gradient", "-", true, true}, s.F);
     f(FieldSpec{"pk1_stress", "Pa", true, true}, s.P);
     f(FieldSpec{"deformation_gradient_rebase", "-", true, false}, s.F_rebase);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "app/simulation.h"
 #include "io/case_file.h"
@@ -59,8 +60,9 @@ double momentum_scale(const Simulation& sim) {
   return s;
 }
 
-void expect_momentum_conserved(const std::string& kind) {
-  Simulation sim(parse_case_string(impact_case(kind), "impact.toml"), silent_options(1));
+void expect_momentum_conserved(const std::string& kind,
+                               const std::vector<std::string>& overrides = {}) {
+  Simulation sim(parse_case_string(impact_case(kind), "impact.toml", overrides), silent_options(1));
   const Vec2 p0 = sim.total_momentum();
   double max_force = 0.0;
   while (sim.time() < 0.03) {
@@ -132,6 +134,14 @@ TEST(Coupling, RigidBodyImpactConservesMomentumToRoundOff) {
 
 TEST(Coupling, ElasticBodyImpactConservesMomentumToRoundOff) {
   expect_momentum_conserved("elastic");
+}
+
+// numerics.fluid_force_correction = "next_step" (docs/model.md §5): the sub-cycled disc gets
+// dt/2 (F_n+1 - F_n) as a force over the next step; counting the impulse still due to it
+// (Simulation::total_momentum), the exchange stays exact. Broken on purpose: leaving the due
+// impulse out of total_momentum fails this test (the momentum error is then ~1e-4 of scale).
+TEST(Coupling, ElasticBodyNextStepCorrectionConservesMomentumToRoundOff) {
+  expect_momentum_conserved("elastic", {"numerics.fluid_force_correction=\"next_step\""});
 }
 
 TEST(Coupling, ThinPlateDoesNotLeak) {
