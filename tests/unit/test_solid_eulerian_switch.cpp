@@ -101,6 +101,27 @@ bool same(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
+// Rigid spin about the bar's centre plus uniform noise in [−5, 5] m/s.
+void spin(SolidBody& b, int nx, int ny, Vec2 base, double omega, std::mt19937& gen) {
+  std::uniform_real_distribution<double> u(-5.0, 5.0);
+  const Vec2 c{0.5 * nx * kDx, 0.5 * ny * kDx};
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const Vec2 r = b.x[i] - c;
+    b.v[i] = base + omega * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
+  }
+}
+
+// Positions perturbed by up to ±amp dx (a non-affine state), F from them, then column `col`
+// of the nx-wide lattice failed and the switch applied: the rebuild's C differs from 1.
+void perturb_and_switch(SolidBody& b, int nx, int col, double amp, std::mt19937& gen,
+                        const Executor& exec) {
+  std::uniform_real_distribution<double> u(-amp * kDx, amp * kDx);
+  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
+  compute_deformation_gradients(b, b.topology, exec);
+  fail_column(b, nx, col);
+  ASSERT_TRUE(update_eulerian_switch(b, exec));
+}
+
 }  // namespace
 
 TEST(EulerianSwitch, SwitchedSetIsFailedAndTheirReferenceNeighbours) {
@@ -153,12 +174,7 @@ TEST(EulerianSwitch, FreeBodyKeepsLinearAndAngularMomentum) {
   const int nx = 24, ny = 10;
   SolidBody b = bar(nx, ny);
   std::mt19937 gen(7);
-  std::uniform_real_distribution<double> u(-5.0, 5.0);
-  const Vec2 c{0.5 * nx * kDx, 0.5 * ny * kDx};
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    const Vec2 r = b.x[i] - c;
-    b.v[i] = Vec2{3.0, -1.0} + 2000.0 * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
-  }
+  spin(b, nx, ny, Vec2{3.0, -1.0}, 2000.0, gen);
   fail_column(b, nx, 12);
   refresh_internal_forces(b, Executor(1));
   const Momenta m0 = momenta(b);
@@ -267,19 +283,10 @@ TEST(EulerianSwitch, FusedSubstepForcesEqualTheOperators) {
   const int nx = 24, ny = 10;
   SolidBody b = bar(nx, ny);
   std::mt19937 gen(11);
-  std::uniform_real_distribution<double> u(-5.0, 5.0);
-  const Vec2 c{0.5 * nx * kDx, 0.5 * ny * kDx};
-  for (std::size_t i = 0; i < b.size(); ++i) {
-    const Vec2 r = b.x[i] - c;
-    b.v[i] = 1000.0 * Vec2{-r.y, r.x} + Vec2{u(gen), u(gen)};
-  }
-  // Deformed non-affinely before the switch, so that the rebuild's C differs from 1.
-  std::uniform_real_distribution<double> ux(-0.03 * kDx, 0.03 * kDx);
-  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{ux(gen), ux(gen)};
+  spin(b, nx, ny, Vec2{}, 1000.0, gen);
   const Executor exec(1);
-  compute_deformation_gradients(b, b.topology, exec);
-  fail_column(b, nx, 12);
-  ASSERT_TRUE(update_eulerian_switch(b, exec));
+  perturb_and_switch(b, nx, 12, 0.03, gen, exec);
+  if (HasFatalFailure()) return;
   refresh_internal_forces(b, exec);
   run_elastic_substeps(b, 1, 0.5 * stable_time_step(b), Vec2{}, exec);
   const std::span<const Vec2> vh = b.substep.vhalf;  // the one sub-step's v½
@@ -319,13 +326,10 @@ TEST(EulerianSwitch, DeformationGradientIsContinuousAcrossTheRebuild) {
   const int nx = 24, ny = 10;
   SolidBody b = bar(nx, ny);
   std::mt19937 gen(3);
-  std::uniform_real_distribution<double> u(-0.05 * kDx, 0.05 * kDx);
-  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
   const Executor exec(1);
-  compute_deformation_gradients(b, b.topology, exec);
-  const std::vector<Mat2> before = b.F;
-  fail_column(b, nx, 12);
-  ASSERT_TRUE(update_eulerian_switch(b, exec));
+  perturb_and_switch(b, nx, 12, 0.05, gen, exec);
+  if (HasFatalFailure()) return;
+  const std::vector<Mat2> before = b.F;  // the switch leaves F as it was
   double jump = 0.0, kept = 0.0;
   for (std::size_t i = 0; i < b.size(); ++i) {
     if (b.eulerian.switched[i]) continue;
@@ -363,12 +367,10 @@ TEST(EulerianSwitch, StressForceIsConjugateToTheRebasedF) {
   const int nx = 24, ny = 10;
   SolidBody b = bar(nx, ny);
   std::mt19937 gen(5);
-  std::uniform_real_distribution<double> u(-0.05 * kDx, 0.05 * kDx);
-  for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
   const Executor exec(1);
-  compute_deformation_gradients(b, b.topology, exec);
-  fail_column(b, nx, 12);
-  ASSERT_TRUE(update_eulerian_switch(b, exec));
+  perturb_and_switch(b, nx, 12, 0.05, gen, exec);
+  if (HasFatalFailure()) return;
+  std::uniform_real_distribution<double> u(-0.05 * kDx, 0.05 * kDx);
   // A stressed state: P from the law at a further random deformation.
   for (std::size_t i = 0; i < b.size(); ++i) b.x[i] += Vec2{u(gen), u(gen)};
   for (std::size_t i = 0; i < b.size(); ++i)
