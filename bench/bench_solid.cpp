@@ -26,6 +26,7 @@
 #include "app/simulation.h"
 #include "core/parallel.h"
 #include "geometry/polar_lattice.h"
+#include "geometry/structure_order.h"
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 #include "solid/body_dynamics.h"
@@ -62,7 +63,10 @@ constexpr RingCase kRings[] = {{0.3, 2}, {0.3, 4}, {0.7958, 6}};
 
 SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false) {
   const double t = 0.003;
-  const ParticleLattice lat = ring({0.0, 0.0}, rc.r_mid - 0.5 * t, rc.r_mid + 0.5 * t, rc.layers);
+  // Stored along the structure, as the case builder stores every elastic body
+  // (geometry/structure_order.h).
+  const ParticleLattice lat = ordered_along_structure(
+      ring({0.0, 0.0}, rc.r_mid - 0.5 * t, rc.r_mid + 0.5 * t, rc.layers), t / rc.layers);
   const double rho = 2700.0;
   SolidBody b;
   b.X = lat.x;

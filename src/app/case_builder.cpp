@@ -29,6 +29,10 @@ SolidBody build_body(const CaseConfig& cfg, std::size_t index) {
   ParticleLattice lat;
   try {
     lat = build_shape(bc.shape, body.dx);
+    // Elastic bodies are stored along the structure, not part by part and layer by layer:
+    // the sub-step's pair sums then read nearby memory and each thread's share touches the
+    // other's in few places (geometry/structure_order.h, docs/model.md §3 "Particle order").
+    if (setup.kind == BodyKind::Elastic) lat = ordered_along_structure(lat, body.dx);
   } catch (const FuselageShapeError& e) {
     throw InputError(cfg.where("body[" + std::to_string(index) + "].shape." + e.key) + ": " +
                      e.what());

@@ -8,4 +8,5 @@
 #include "geometry/polygon_lattice.h"
 #include "geometry/remove_overlap.h"
 #include "geometry/shape_bounds.h"
+#include "geometry/structure_order.h"
 #include "geometry/tank_walls.h"

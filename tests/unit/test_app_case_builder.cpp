@@ -65,3 +65,33 @@ TEST(CaseBuilder, FailedParticlesChoiceReachesTheBody) {
   EXPECT_TRUE(body_setup_from_case(cfg, 0).eulerian_switch);
   EXPECT_TRUE(build_case(cfg).system.bodies.at(0).eulerian_switch);
 }
+
+// An elastic body is stored along the structure (geometry/structure_order.h): the reference
+// partners of a particle are stored near it and the two halves of the storage (the shares
+// of two threads) meet in few places. The 2-layer skin of skin_ring_reduced laid out layer by
+// layer has its partners in the other layer 1 250 places away and every particle of the first
+// half (layer 0) has partners in the second.
+TEST(CaseBuilder, ElasticBodiesAreStoredAlongTheStructure) {
+  const CaseConfig cfg =
+      load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/skin_ring_reduced.toml");
+  const BuiltCase built = build_case(cfg);
+  const SolidBody& skin = built.system.bodies.at(1);
+  ASSERT_EQ(skin.name, "skin");
+  const auto& start = skin.topology.pairs.start;
+  const auto& index = skin.topology.pairs.index;
+  const std::size_t n = skin.size(), half = n / 2;
+  double distance = 0.0;
+  std::size_t crossing = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool crosses = false;
+    for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
+      const std::size_t j = index[k];
+      distance += static_cast<double>(j > i ? j - i : i - j);
+      if (i < half && j >= half) crosses = true;
+    }
+    crossing += crosses ? 1 : 0;
+  }
+  distance /= static_cast<double>(index.size());
+  EXPECT_LT(distance, 50.0);
+  EXPECT_LT(static_cast<double>(crossing), 0.02 * static_cast<double>(n));
+}
