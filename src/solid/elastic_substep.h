@@ -41,8 +41,11 @@ class Executor;
 
 // Particles per thread below which a body's sub-steps use fewer threads (a team of t threads
 // needs at least t times this many particles): below it the barriers cost more than the split
-// saves. Measured on the ring benchmarks (bench/bench_solid.cpp; /work notes of issue 13).
-constexpr std::size_t kSubstepParticlesPerThread = 4000;
+// saves. With the bodies stored along the structure (geometry/structure_order.h) a team of
+// two pays from 2 500 particles: cases/skin_ring_reduced.toml to 6 ms on 2 threads (passive
+// waiting) took 13.4 s (median of 3) against 16.4 s with the former 4 000 (1 thread: 18.4 s;
+// 2 threads next to a busy core: 18.2 s), results bit-identical (docs/model.md §5).
+constexpr std::size_t kSubstepParticlesPerThread = 1000;
 
 // `steps` sub-steps of size h [s] with the fluid force body.f_fluid and gravity g held; needs
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,

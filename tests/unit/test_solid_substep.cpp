@@ -155,7 +155,7 @@ TEST(ElasticSubstep, FusedEqualsOperatorSequenceJ2) {
 }
 
 TEST(ElasticSubstep, OneRegionTwoBarriersPerSubstep) {
-  // 100 x 90 = 9 000 particles: a team of two (kSubstepParticlesPerThread = 4 000).
+  // 100 x 90 = 9 000 particles: a team of two (kSubstepParticlesPerThread = 1 000).
   SolidBody b = loaded_block(100, 90, plate_material(0.5, 1.0));
   const Executor two(2);
   ASSERT_EQ(two.threads_for(b.size(), kSubstepParticlesPerThread), 2);
