@@ -7,15 +7,16 @@
 # and the overlays the paper's comparisons need (Figs. 12, 14, 17, 25). Each run is a
 # normal run folder under OUT; a run whose summary.json says "completed" is skipped, so the
 # script resumes. OUT/studies.md tabulates every run: particles, fluid steps, solid sub-steps
-# per fluid step, wall time, peak force and time, impulse, leaked particles, momentum error
-# of the water–body exchange, peak strain and where, keel deflection and ovalisation.
+# per fluid step, wall time, peak force and time, impulse, leaked particles, peak strain and
+# where, keel deflection, ovalisation, column shortening, floor deflection, energy residual.
 # Usage: scripts/validate_fuselage_studies.sh [THREADS=2] [OUT=results/fuselage_studies]
 #   RUNS="name ..." runs only those (names as in the table: skin_cylinder, L_floor10, ...).
 #   EXTRA="--set KEY=VALUE ..." is passed to every run (e.g. a shorter --end-time).
 #   SLAMSPH=path runs that binary instead of building build/slamsph (a frozen copy, so that
 #   rebuilding during the hours of a study does not mix two versions in one table).
-# Cost (2 threads, quiet machine): about 2 min for the skin, 5–10 min for each section with
-# floor and columns; all eleven runs about 1.5 h.
+# Cost (session 7, main 30d7de5): the skin 222 s on 2 threads of an idle machine; the sections
+# with stringers 410–460 s and with floor and columns 500–970 s on one thread each, two runs at
+# a time on 2 cores; all eleven runs about 1 h that way (THREADS=1, RUNS split in two).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 threads=${1:-2}
