@@ -33,6 +33,13 @@ struct ParticleLattice {
     part.insert(part.end(), o.part.begin(), o.part.end());
     spacing.insert(spacing.end(), o.spacing.begin(), o.spacing.end());
   }
+  // The particles in the order p (new index k holds particle p[k]), every field moved
+  // together; kept next to add() and append() so that a new field is moved too.
+  ParticleLattice permuted(const std::vector<std::size_t>& p) const {
+    ParticleLattice out;
+    for (std::size_t k : p) out.add(x.at(k), volume.at(k), layer.at(k), part.at(k), spacing.at(k));
+    return out;
+  }
   double total_volume() const {
     double s = 0.0;
     for (double v : volume) s += v;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -62,19 +61,11 @@ std::vector<std::size_t> hilbert_order(std::span<const Vec2> x, double cell) {
   return p;
 }
 
-ParticleLattice permuted(const ParticleLattice& lat, std::span<const std::size_t> p) {
-  if (p.size() != lat.size()) throw std::invalid_argument("permuted: wrong permutation size");
-  ParticleLattice out;
-  for (std::size_t k : p)
-    out.add(lat.x[k], lat.volume[k], lat.layer[k], lat.part[k], lat.spacing[k]);
-  return out;
-}
-
 ParticleLattice ordered_along_structure(const ParticleLattice& lat, double dx) {
   double cell = dx;
   for (double d : lat.spacing)
     if (d > 0.0) cell = std::min(cell, d);
-  return permuted(lat, hilbert_order(lat.x, cell));
+  return lat.permuted(hilbert_order(lat.x, cell));
 }
 
 }  // namespace slamsph

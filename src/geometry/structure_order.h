@@ -22,9 +22,6 @@ namespace slamsph {
 // box; points in one cell keep their relative order. Deterministic.
 std::vector<std::size_t> hilbert_order(std::span<const Vec2> x, double cell);
 
-// The lattice with its particles in the order p (every per-particle field moved together).
-ParticleLattice permuted(const ParticleLattice& lat, std::span<const std::size_t> p);
-
 // `lat` in Hilbert order on cells of its finest spacing (`dx` where a particle has none).
 ParticleLattice ordered_along_structure(const ParticleLattice& lat, double dx);
 
