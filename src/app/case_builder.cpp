@@ -162,6 +162,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.hydrostatic_correction = cfg.fluid.hydrostatic_correction;
   p.contact_barrier = cfg.fluid.contact_barrier;
   p.substep_average = num.substep_average;
+  p.wall_acceleration = num.wall_acceleration;
   p.neighbour_skin = num.neighbour_skin;
   if (cfg.fluid.absorbing_zone.active()) {
     // The zone lines the walls of the case's one tank (checked by the parser); the

@@ -31,7 +31,7 @@ void FsiStepper::evaluate_rates() {
   ContactParticles& contact = sys_.contact;
   gather_body_state(contact, sys_.layout, sys_.bodies);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    apply_substep_average(contact, sys_.layout, b, averages_[b]);
+    apply_substep_average(contact, sys_.layout, b, averages_[b], prm_.wall_acceleration);
   lists_->update(fluid, contact, exec_);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};

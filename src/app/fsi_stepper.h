@@ -32,6 +32,7 @@
 #include "coupling/force_correction_kind.h"
 #include "coupling/interaction_lists.h"
 #include "coupling/substep_average.h"
+#include "coupling/wall_acceleration_kind.h"
 #include "fluid/absorbing_zone.h"
 #include "fluid/fluid_particles.h"
 #include "fluid/tait_eos.h"
@@ -61,6 +62,8 @@ struct FsiParams {
   // The fluid sees sub-cycled bodies' velocity and acceleration averaged over the fluid step
   // (coupling/substep_average.h) instead of those of the last sub-step.
   bool substep_average = true;
+  // Which of those accelerations the contact's static term uses (wall_acceleration_kind.h).
+  WallAcceleration wall_acceleration = WallAcceleration::BodyMean;
   double neighbour_skin = 0.2;   // Verlet skin as a fraction of the contact support [-]
   AbsorbingZone absorbing_zone;  // damping bands along tank walls (inactive by default)
 };

@@ -30,6 +30,7 @@ constexpr double kMaxSpacingRatio = 8.0;
 
 const std::vector<std::string> kKernels{"wendland_c2", "cubic_spline"};
 const std::vector<std::string> kForceCorrections{"kick", "none", "next_step"};
+const std::vector<std::string> kWallAccelerations{"body_mean", "local", "none"};
 // Body kinds and schemes: the one table of names in solid/body_kind.h.
 template <class Table>
 std::vector<std::string> names_of(const Table& table) {
@@ -174,8 +175,8 @@ NumericsConfig parse_numerics(const Reader& root) {
   auto r = root.table("numerics", "a [numerics] table");
   if (!r) root.missing("numerics", "a [numerics] table with dx, end_time and [numerics.domain]");
   r->allow({"dx", "h_over_dx", "kernel", "cfl", "solid_cfl", "end_time", "gravity",
-            "neighbour_skin", "dual_time_stepping", "substep_average", "fluid_force_correction",
-            "dt_floor", "domain"});
+            "neighbour_skin", "dual_time_stepping", "substep_average", "wall_acceleration",
+            "fluid_force_correction", "dt_floor", "domain"});
   NumericsConfig n;
   n.dx = num(*r, "dx", positive("a positive length in m"));
   n.h_over_dx = num(*r, "h_over_dx", {1.0, 3.0, false, false, "a ratio h/dx in [1, 3]"}, 1.3);
@@ -189,6 +190,10 @@ NumericsConfig parse_numerics(const Reader& root) {
           {0.0, 1.0, false, false, "a fraction of the kernel support in [0, 1]"}, 0.2);
   n.dual_time_stepping = r->boolean("dual_time_stepping").value_or(true);
   n.substep_average = r->boolean("substep_average").value_or(true);
+  const std::string wall = r->choice("wall_acceleration", kWallAccelerations).value_or("body_mean");
+  n.wall_acceleration = wall == "local"  ? WallAcceleration::Local
+                        : wall == "none" ? WallAcceleration::None
+                                         : WallAcceleration::BodyMean;
   const std::string corr = r->choice("fluid_force_correction", kForceCorrections).value_or("kick");
   n.fluid_force_correction = corr == "none"        ? FluidForceCorrection::None
                              : corr == "next_step" ? FluidForceCorrection::NextStep

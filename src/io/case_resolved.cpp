@@ -82,6 +82,11 @@ std::string resolved_case_toml(const CaseConfig& c) {
   o << "neighbour_skin = " << d(n.neighbour_skin) << "\n";
   o << "dual_time_stepping = " << b(n.dual_time_stepping) << "\n";
   o << "substep_average = " << b(n.substep_average) << "\n";
+  o << "wall_acceleration = "
+    << q(n.wall_acceleration == WallAcceleration::Local  ? "local"
+         : n.wall_acceleration == WallAcceleration::None ? "none"
+                                                         : "body_mean")
+    << "\n";
   o << "fluid_force_correction = "
     << q(n.fluid_force_correction == FluidForceCorrection::None       ? "none"
          : n.fluid_force_correction == FluidForceCorrection::NextStep ? "next_step"
