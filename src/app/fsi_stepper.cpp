@@ -8,6 +8,7 @@
 #include "coupling/contact_rates.h"
 #include "coupling/leak_counter.h"
 #include "coupling/virtual_pressure.h"
+#include "coupling/wall_acceleration.h"
 #include "fluid/gsph_fluid_rates.h"
 
 namespace slamsph {
@@ -31,7 +32,9 @@ void FsiStepper::evaluate_rates() {
   ContactParticles& contact = sys_.contact;
   gather_body_state(contact, sys_.layout, sys_.bodies);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    apply_substep_average(contact, sys_.layout, b, averages_[b], prm_.wall_acceleration);
+    apply_substep_average(contact, sys_.layout, b, averages_[b]);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    apply_wall_acceleration(contact, sys_.layout, b, sys_.bodies[b], prm_.wall_acceleration);
   lists_->update(fluid, contact, exec_);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};

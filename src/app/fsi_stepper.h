@@ -62,7 +62,8 @@ struct FsiParams {
   // The fluid sees sub-cycled bodies' velocity and acceleration averaged over the fluid step
   // (coupling/substep_average.h) instead of those of the last sub-step.
   bool substep_average = true;
-  // Which of those accelerations the contact's static term uses (wall_acceleration_kind.h).
+  // Which acceleration of elastic bodies the contact's static term uses
+  // (coupling/wall_acceleration_kind.h).
   WallAcceleration wall_acceleration = WallAcceleration::BodyMean;
   double neighbour_skin = 0.2;   // Verlet skin as a fraction of the contact support [-]
   AbsorbingZone absorbing_zone;  // damping bands along tank walls (inactive by default)

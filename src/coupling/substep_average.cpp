@@ -17,24 +17,16 @@ void SubstepAverage::end(const SolidBody& body, double dt) {
     v_mean[i] = (body.x[i] - x0[i]) * inv_dt;
     a_mean[i] = (body.v[i] - v0[i]) * inv_dt;
   }
-  // The body's momentum change over the step per unit mass (clamped particles included:
-  // their share is zero or prescribed).
-  double mass = 0.0;
-  Vec2 ma;
-  for (std::size_t i = 0; i < n; ++i) mass += body.m[i], ma += body.m[i] * a_mean[i];
-  a_body = mass > 0.0 ? (1.0 / mass) * ma : Vec2{};
   valid = dt > 0.0;
 }
 
 void apply_substep_average(ContactParticles& contact, const ContactLayout& layout, std::size_t b,
-                           const SubstepAverage& avg, WallAcceleration wall) {
+                           const SubstepAverage& avg) {
   if (!avg.valid) return;
   const std::size_t o = layout.offset[b];
   for (std::size_t i = 0; i < avg.v_mean.size(); ++i) {
     contact.v[o + i] = avg.v_mean[i];
-    contact.a[o + i] = wall == WallAcceleration::Local      ? avg.a_mean[i]
-                       : wall == WallAcceleration::BodyMean ? avg.a_body
-                                                            : Vec2{};
+    contact.a[o + i] = avg.a_mean[i];
   }
   for (std::size_t g = 0; g < layout.ghosts.size(); ++g) {
     const ContactGhost& gh = layout.ghosts[g];

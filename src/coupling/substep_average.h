@@ -6,16 +6,13 @@
 // noise. The fluid step only resolves the motion averaged over it, so the contact takes the
 // time averages over [t_n, t_n + dt] (as SPHinXsys does), which are exact for any sub-step
 // sequence: v_mean = (x(t_n + dt) - x(t_n)) / dt, a_mean = (v(t_n + dt) - v(t_n)) / dt.
-// Positions stay the current ones. Which acceleration the contact's static term then uses
-// is numerics.wall_acceleration (coupling/wall_acceleration_kind.h): by default the body's
-// mass-weighted mean ā, not each particle's (docs/model.md §4).
+// Positions stay the current ones.
 #pragma once
 #include <vector>
 
 #include "core/vec.h"
 #include "coupling/contact_layout.h"
 #include "coupling/contact_particles.h"
-#include "coupling/wall_acceleration_kind.h"
 #include "solid/solid_body.h"
 
 namespace slamsph {
@@ -23,7 +20,6 @@ namespace slamsph {
 struct SubstepAverage {
   std::vector<Vec2> x0, v0;          // body state at the start of the fluid step
   std::vector<Vec2> v_mean, a_mean;  // averages over the step (valid after end())
-  Vec2 a_body;                       // Σ m ā / Σ m over the body's particles
   bool valid = false;
 
   void begin(const SolidBody& body);
@@ -31,9 +27,8 @@ struct SubstepAverage {
 };
 
 // Replaces the gathered velocity and acceleration of body b's contact particles (and of
-// their ghosts) by the averages, where `avg` is valid: the velocity by v_mean, the
-// acceleration by a_body, a_mean or zero as `wall` says.
+// their ghosts) by the averages, where `avg` is valid.
 void apply_substep_average(ContactParticles& contact, const ContactLayout& layout, std::size_t b,
-                           const SubstepAverage& avg, WallAcceleration wall);
+                           const SubstepAverage& avg);
 
 }  // namespace slamsph

@@ -404,8 +404,10 @@ TEST(WetRing, FloatingRingFollowsAddedMassOnlyWithSuction) {
               100 * (clamp.f / f_ritz - 1));
   EXPECT_EQ(suction.leaked, 0);
   EXPECT_NEAR(suction.f / f_ritz, 1.0, 0.03);
-  EXPECT_GT(clamp.f / f_ritz, 1.03);
-  EXPECT_GT(clamp.f, suction.f);
+  // The clamp lets the near-surface water go: a higher frequency (measured +3.2 % over the
+  // suction run with numerics.wall_acceleration = body_mean, +6.5 % with local; the
+  // zero-pressure test below is the clamp's clear failure).
+  EXPECT_GT(clamp.f / suction.f, 1.015);
 }
 
 // Without gravity the water is at zero pressure: the clamp lets the water go on the first
