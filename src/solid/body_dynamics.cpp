@@ -89,6 +89,30 @@ void advance_elastic(SolidBody& body, double t, double dt, Vec2 gravity, const E
   run_elastic_substeps(body, steps, h, g, exec);
 }
 
+// The smoothing-length ratio at which solid_cfl = 0.5 was measured to sit at 85-90 % of the
+// leapfrog limit with the default artificial viscosity α = 1 (docs/model.md §3 "Solid stable
+// step").
+constexpr double kCalibratedHOverDx = 1.3;
+
+// The length ℓ of the solid stable step (docs/model.md §3 "Solid stable step"). The leapfrog
+// with the viscous force taken at the half-step velocity is stable while
+// (Δt ω/2)² + Δt γ/2 < 1, ω the fastest stress-wave frequency and γ the fastest viscous
+// damping rate. TL-SFPM's gradient is a nearest-neighbour stencil, so ω ∝ c/dx whatever h,
+// while the viscosity's μ_ij ∝ h gives γ ∝ α c h/dx². The step ℓ/c therefore keeps ℓ ≤ h_c
+// and α h ℓ ≤ h_c² (h_c = 1.3 dx, the calibrated point), which holds both terms at or below
+// their calibrated values; ℓ = h exactly for h ≤ h_c and α ≤ 1. The full-support TLSPH
+// gradient spreads over the kernel (ω ∝ c/h), so there only α > 1 shortens the step.
+double step_length(const SolidBody& body) {
+  const double h = body.kernel.h();
+  const double alpha = body.material.av_alpha;
+  if (body.scheme == SolidScheme::TlSph) return alpha > 1.0 ? h / alpha : h;
+  const double hc = kCalibratedHOverDx * body.dx;
+  double l = std::min(h, hc);
+  const double viscous = alpha * h;
+  if (viscous > hc) l = std::min(l, hc * (hc / viscous));
+  return l;
+}
+
 }  // namespace
 
 void refresh_internal_forces(SolidBody& body, const Executor& exec) {
@@ -257,7 +281,7 @@ double stable_time_step(const SolidBody& body) {
   // measure max |g| dx <= 1; the fuselage joints 1.1-1.3). Without it a 2-layer skin with a
   // floor diverges within 100 sub-steps (tests/unit/test_app_fuselage.cpp).
   const double stiff = std::max(1.0, body.topology.max_gradient * body.dx);
-  return body.cfl * body.kernel.h() / (stiff * (c + vmax));
+  return body.cfl * step_length(body) / (stiff * (c + vmax));
 }
 
 void advance_body(SolidBody& body, double t, double dt, Vec2 gravity, const Executor& exec) {

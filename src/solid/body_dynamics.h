@@ -28,8 +28,11 @@ class Executor;
 // body).
 void setup_body(SolidBody& body, const BodySetup& cfg);
 
-// Δt_s = CFL · h / (c_s sqrt(1 + α_hg) + max|v|) (spec §3; α_hg the hourglass coefficient)
-// for elastic bodies; +inf for rigid kinds.
+// Δt_s = CFL · ℓ / (s (c_s sqrt(1 + α_hg) + max|v|)) (spec §3; α_hg the hourglass
+// coefficient, s the joints' gradient factor) for elastic bodies; +inf for rigid kinds. ℓ = h
+// for h <= 1.3 dx and artificial viscosity α <= 1; above, ℓ shrinks so that neither the
+// stress waves (set by dx in TL-SFPM) nor the viscous damping (∝ α h) outrun the step
+// (docs/model.md §3 "Solid stable step").
 double stable_time_step(const SolidBody& body);
 
 // Advances from t to t + dt holding body.f_fluid constant (see the header comment). Sets
