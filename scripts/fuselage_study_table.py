@@ -3,7 +3,8 @@
 
 Reads every run folder under OUT (summary.json, forces.csv, probes.csv) and prints one
 Markdown row per run: particles, fluid steps, solid sub-steps per fluid step, wall time and
-threads, status, leaked water particles, the peak vertical force and its time, the vertical
+threads, status, leaked water particles, the momentum error (the largest |R| of the
+momentum balance against its largest term, summary.json "momentum_balance"), the peak vertical force and its time, the vertical
 impulse, the force late in the entry (mean Fy over 20-50 ms), the largest step-to-step
 oscillation of Fy (rms about its 1 ms moving average, worst 5 ms window), the largest equivalent strain
 of each part with its angle from the keel, the largest keel deflection, the ovalisation at
@@ -101,10 +102,14 @@ def row(out, name):
     steps = s.get("fluid_steps", 0)
     sub = s.get("solid_substeps", 0) / steps if steps else float("nan")
     e = s.get("energy_balance", {})
+    # The momentum balance's largest |R| (x or y) against its largest term (README "Momentum
+    # balance"); "–" for runs from before summary.json had it.
+    mo = s.get("momentum_balance", {}).get("max_abs_residual_relative")
+    mom = "%.1e" % max(abs(v) for v in mo) if mo else "–"
     return [
         name, s.get("status", "?"), "%d / %d" % (s["particles"]["fluid"], s["particles"][body]),
         "%d" % steps, "%.0f" % sub, "%.0f s (%d)" % (s.get("wall_seconds", 0), s.get("threads", 0)),
-        "%d" % s.get("leaked_particles", -1), "%.1f kN/m at %.2f ms" % (fy[k] / 1e3, 1e3 * t[k]),
+        "%d" % s.get("leaked_particles", -1), mom, "%.1f kN/m at %.2f ms" % (fy[k] / 1e3, 1e3 * t[k]),
         "%.2f" % impulse, "%.2f" % (late_mean / 1e3),
         "%.1f (%d-%d ms)" % (osc_max[0] / 1e3, osc_max[1], osc_max[1] + 5), "%.1f" % (1e3 * keel),
         "%.1f / %.1f" % (1e3 * oval[0], 1e3 * oval[1]),
@@ -120,7 +125,7 @@ def main():
                    if os.path.isfile(os.path.join(out, n, "summary.json"))
                    and os.path.isfile(os.path.join(out, n, "forces.csv")))
     head = ["run", "status", "water / structure particles", "fluid steps", "sub-steps per step",
-            "wall (threads)", "leaked", "peak Fy", "impulse Fy [N s/m]", "mean Fy 20-50 ms [kN/m]", "largest Fy oscillation rms [kN/m] (window)",
+            "wall (threads)", "leaked", "momentum error", "peak Fy", "impulse Fy [N s/m]", "mean Fy 20-50 ms [kN/m]", "largest Fy oscillation rms [kN/m] (window)",
             "max keel deflection [mm]", "end ΔD vertical / horizontal [mm]",
             "max column shortening [mm]", "max floor mid-span deflection [mm]",
             "peak equivalent strain per part, angle from the keel", "energy residual"]

@@ -7,7 +7,9 @@
 # and the overlays the paper's comparisons need (Figs. 12, 14, 17, 25). Each run is a
 # normal run folder under OUT; a run whose summary.json says "completed" is skipped, so the
 # script resumes. OUT/studies.md tabulates every run: particles, fluid steps, solid sub-steps
-# per fluid step, wall time, peak force and time, impulse, leaked particles, peak strain and
+# per fluid step, wall time, leaked particles, momentum error (summary.json
+# "momentum_balance": the largest |R| of the water–body momentum balance, x or y, against its
+# largest term; README "Momentum balance"), peak force and time, impulse, peak strain and
 # where, keel deflection, ovalisation, column shortening, floor deflection, energy residual.
 # Usage: scripts/validate_fuselage_studies.sh [THREADS=2] [OUT=results/fuselage_studies]
 #   RUNS="name ..." runs only those (names as in the table: skin_cylinder, L_floor10, ...).

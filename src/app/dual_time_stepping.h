@@ -8,6 +8,13 @@
 // not at all ("none"); coupling/force_correction_kind.h, docs/model.md §5. With the switch off (or
 // no fluid to sub-cycle within) the bodies' stable steps join the fluid step's limit
 // (app/time_step_limit.h) and every body takes one step per fluid step: the global-step scheme.
+//
+// Each step it also tells the fluid's impulse each body received (the momentum balance,
+// README "Momentum balance"): dt times the force the body was advanced with (Σ f_fluid, with
+// the due impulse NextStep delivers), plus the kick as measured on the body, Σ m Δv over the
+// particles it moves (a rigid_free body: M Δv of its centre). What no integrator moves — a
+// fixed or prescribed body, a clamped particle — is held by its support, which takes the
+// water's force as the water gave it: dt/2 (F_n+1 − F_n) of those particles is added as it is.
 #pragma once
 #include <vector>
 
@@ -34,13 +41,17 @@ class DualTimeStepping {
   long advance(std::vector<SolidBody>& bodies, double t, double dt, Vec2 gravity, bool subcycled,
                const Executor& exec);
   // After the bodies' f_fluid was replaced by the new evaluation.
-  void correct(std::vector<SolidBody>& bodies, double dt) const;
+  void correct(std::vector<SolidBody>& bodies, double dt);
+  // The fluid impulse body b received over the last advance() and correct() [N s/m].
+  Vec2 received(std::size_t b) const { return received_[b]; }
 
  private:
   bool enabled_;
   std::vector<std::vector<Vec2>> f_held_;  // the fluid force each body was advanced with
   FluidForceCorrection correction_;
-  bool subcycled_ = false;  // of the last advance()
+  bool subcycled_ = false;      // of the last advance()
+  std::vector<Vec2> received_;  // per body, see received()
+  std::vector<Vec2> v_before_;  // scratch: velocities before the kick
   // Whether `body` gets its correction later or never rather than as the kick.
   bool corrects_later(const SolidBody& body) const;
 };

@@ -23,6 +23,7 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
       std::make_unique<InteractionLists>(sys_.kernel_f.support(), sys_.kernel_c.support(), skin);
   loads_.assign(sys_.bodies.size(), BodyLoad{});
   averages_.assign(sys_.bodies.size(), SubstepAverage{});
+  received_.assign(sys_.bodies.size(), Vec2{});
   evaluate_rates();
 }
 
@@ -108,13 +109,14 @@ void FsiStepper::step() {
   time_ += dt;
   evaluate_rates();
   dual_.correct(sys_.bodies, dt);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.v[i] = f.v_half[i] + hdt * f.a[i];
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos.pressure(f.rho[i]);
   });
   // Acoustic damping near the chosen tank walls, over the whole step (absorbing_zone.h).
-  apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
+  zone_momentum_ += apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
   ++steps_;
   check_state();
 }

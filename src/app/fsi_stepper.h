@@ -101,6 +101,12 @@ class FsiStepper {
   std::string describe_limit() const { return describe(limit_, sys_.bodies); }
   BodyLoad body_load(std::size_t b) const { return loads_[b]; }
   const std::vector<BodyLoad>& body_loads() const { return loads_; }
+  // Momentum balance (README "Momentum balance"), both accumulated since t = 0: the fluid
+  // impulse body b received as its integrator applied it (app/dual_time_stepping.h), and the
+  // momentum change the absorbing zone made to the water, Σ m Δv (fluid/absorbing_zone.h)
+  // [N s/m].
+  Vec2 body_fluid_impulse(std::size_t b) const { return received_[b]; }
+  Vec2 absorbing_zone_momentum() const { return zone_momentum_; }
   const FsiParams& params() const { return prm_; }
   void set_end_time(double t) { prm_.end_time = t; }
 
@@ -118,6 +124,8 @@ class FsiStepper {
     f("steps", s.steps_);
     f("solid_substeps", s.solid_substeps_);
     f("leaked_particles", s.leaked_);
+    f("body_fluid_impulse", s.received_);
+    f("absorbing_zone_momentum", s.zone_momentum_);
   }
   void restore_loads(std::vector<BodyLoad> loads) { loads_ = std::move(loads); }
 
@@ -139,6 +147,8 @@ class FsiStepper {
   long steps_ = 0;
   long solid_substeps_ = 0;
   long leaked_ = 0;
+  std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
+  Vec2 zone_momentum_;
 };
 
 }  // namespace slamsph

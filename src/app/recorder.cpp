@@ -21,6 +21,15 @@
 
 namespace slamsph {
 
+namespace {
+
+// Σ m v of the water, in the executor's fixed-order sum (the same for any thread count).
+Vec2 fluid_momentum(const FluidParticles& f, const Executor& exec) {
+  return exec.sum_of<Vec2>(f.size(), [&](std::size_t i) { return f.m[i] * f.v[i]; });
+}
+
+}  // namespace
+
 Recorder::Recorder(const CaseConfig& cfg, const RunOptions& opt, const FsiStepper& stepper,
                    const ProbeSet& probes, const Executor& exec)
     : cfg_(cfg), opt_(opt), st_(stepper), probes_(probes), exec_(exec) {
@@ -55,8 +64,8 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     if (!resume) OutputFolder::check_free(dir, opt_.overwrite);
     folder_ = std::make_unique<OutputFolder>(
         dir, resume ? OutputFolder::Mode::Continue : OutputFolder::Mode::Fresh);
-    std::vector<std::string> names{"summary.json", "case.resolved.toml", "probes.csv",
-                                   "energy.csv"};
+    std::vector<std::string> names{"summary.json", "case.resolved.toml", "probes.csv", "energy.csv",
+                                   "momentum.csv"};
     if (!bodies.empty()) names.insert(names.end(), {"forces.csv", "bodies.csv"});
     if (cfg_.output.vtk) names.insert(names.end(), {"vtk/", "fields.pvd"});
     if (opt_.checkpoint_interval > 0.0) names.push_back("checkpoints/");
@@ -116,6 +125,17 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
     }
     he.insert(he.end(), {"fluid residual [J/m]", "residual [J/m]"});
     energy_csv_ = csv("energy.csv", he);
+    std::vector<std::string> hm{"time [s]"};
+    for (const char* c : {"x", "y"}) hm.push_back(std::string("fluid momentum ") + c + " [N s/m]");
+    for (const char* c : {"x", "y"})
+      hm.push_back(std::string("fluid gravity_impulse ") + c + " [N s/m]");
+    if (st_.params().absorbing_zone.active())
+      for (const char* c : {"x", "y"})
+        hm.push_back(std::string("fluid absorbing_zone ") + c + " [N s/m]");
+    for (const SolidBody& b : bodies)
+      for (const char* c : {"x", "y"}) hm.push_back(b.name + " fluid_impulse " + c + " [N s/m]");
+    hm.insert(hm.end(), {"residual x [N s/m]", "residual y [N s/m]"});
+    momentum_csv_ = csv("momentum.csv", hm);
   }
   if (!resume) {  // the energy balance is measured from the state at t = 0
     const Vec2 g = st_.params().gravity;
@@ -126,6 +146,7 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
       const BodyEnergyTerms t = body_energy_terms(b, g);
       energy0_.insert(energy0_.end(), {t.kinetic + t.strain + t.hourglass, t.potential});
     }
+    momentum0_ = fluid_momentum(st_.system().fluid, exec_);
   }
   prev_loads_ = st_.body_loads();
   if (!resume) record_loads(0.0);  // a resumed run has this row already
@@ -134,7 +155,7 @@ void Recorder::start(std::vector<std::string> warnings, const RecorderResume* re
 std::vector<CsvResume> Recorder::csv_state() const {
   std::vector<CsvResume> out;
   for (const CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get(), energy_csv_.get(),
-                             failure_csv_.get()}) {
+                             momentum_csv_.get(), failure_csv_.get()}) {
     if (!w) continue;
     const std::string name = std::filesystem::path(w->path()).filename().string();
     out.push_back({name, std::filesystem::file_size(w->path()), w->rows_written()});
@@ -227,6 +248,46 @@ void Recorder::record_energy() {
   energy_csv_->row(row);
 }
 
+// One row of momentum.csv (README "Momentum balance"): the water's momentum P_f = Σ m v and
+//   R = P_f − P_f(0) − M_f g t − Z + Σ_b I_b,
+// Z the momentum change the absorbing zone made (Σ m Δv, a column only when the case has a
+// zone), I_b the fluid impulse body b received as its integrator applied it (with the
+// impulse still due to it under next_step; app/dual_time_stepping.h). Every other force on
+// the water is a pair force (GSPH pairs, fluid/gsph_fluid_rates.h; contact pairs, whose
+// reaction the bodies get, coupling/contact_rates.h), so R is round-off when the exchange is
+// exact, and −Σ dt/2 (F_n+1 − F_n) of the free particles with fluid_force_correction = none.
+void Recorder::record_momentum() {
+  if (!momentum_csv_) return;
+  const FluidParticles& f = st_.system().fluid;
+  const Vec2 p = fluid_momentum(f, exec_);
+  const double mass = exec_.sum_of<double>(f.size(), [&](std::size_t i) { return f.m[i]; });
+  const Vec2 weight = (mass * st_.time()) * st_.params().gravity;
+  const Vec2 dp = p - momentum0_;
+  std::vector<double> row{st_.time(), p.x, p.y, weight.x, weight.y};
+  Vec2 res = dp - weight;
+  double scale = std::max(norm(dp), norm(weight));
+  if (st_.params().absorbing_zone.active()) {
+    const Vec2 z = st_.absorbing_zone_momentum();
+    row.insert(row.end(), {z.x, z.y});
+    res -= z;
+    scale = std::max(scale, norm(z));
+  }
+  const std::vector<SolidBody>& bodies = st_.system().bodies;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    Vec2 impulse = st_.body_fluid_impulse(b);
+    for (const Vec2& d : bodies[b].impulse_due) impulse += d;
+    row.insert(row.end(), {impulse.x, impulse.y});
+    res += impulse;
+    scale = std::max(scale, norm(impulse));
+  }
+  row.insert(row.end(), {res.x, res.y});
+  momentum_scale_ = std::max(momentum_scale_, scale);
+  momentum_max_residual_ = {std::max(momentum_max_residual_.x, std::abs(res.x)),
+                            std::max(momentum_max_residual_.y, std::abs(res.y))};
+  momentum_last_residual_ = res;
+  momentum_csv_->row(row);
+}
+
 void Recorder::write_frame() {
   const FsiSystem& sys = st_.system();
   const FluidParticles& fluid = sys.fluid;
@@ -284,6 +345,7 @@ void Recorder::before_step() {
     frame_step_ = st_.steps();
     record_bodies();
     record_energy();
+    record_momentum();
     next_vtk_ += vtk_dt_;
   }
   prev_loads_ = st_.body_loads();
@@ -297,7 +359,7 @@ void Recorder::after_step() {
 }
 
 void Recorder::finish() {
-  if (opt_.write_output) record_probes(), record_bodies(), record_energy();
+  if (opt_.write_output) record_probes(), record_bodies(), record_energy(), record_momentum();
   if (vtk_) write_frame();
 }
 
@@ -319,8 +381,8 @@ void Recorder::flush() {
       if (!first) first = e;
     }
   };
-  for (CsvWriter* w :
-       {forces_.get(), probes_csv_.get(), bodies_csv_.get(), energy_csv_.get(), failure_csv_.get()})
+  for (CsvWriter* w : {forces_.get(), probes_csv_.get(), bodies_csv_.get(), energy_csv_.get(),
+                       momentum_csv_.get(), failure_csv_.get()})
     if (w) attempt([&] { w->flush(); });
   if (folder_) attempt([&] { folder_->record(); });
   if (first) throw *first;
@@ -384,6 +446,18 @@ void Recorder::write_summary(const RunStatus& status) const {
     en.set("residual_relative", energy_last_residual_ / s);
     en.set("max_abs_residual_relative", energy_max_residual_ / s);
     summary.set("energy_balance", en);
+  }
+  if (momentum_csv_) {
+    // momentum.csv's residual against its largest term (README "Momentum balance").
+    JsonObject mo;
+    const Vec2 r = momentum_last_residual_, rmax = momentum_max_residual_;
+    mo.set("residual_N_s_per_m", std::vector<double>{r.x, r.y});
+    mo.set("max_abs_residual_N_s_per_m", std::vector<double>{rmax.x, rmax.y});
+    mo.set("largest_term_N_s_per_m", momentum_scale_);
+    const double s = momentum_scale_ > 0.0 ? momentum_scale_ : 1.0;
+    mo.set("residual_relative", std::vector<double>{r.x / s, r.y / s});
+    mo.set("max_abs_residual_relative", std::vector<double>{rmax.x / s, rmax.y / s});
+    summary.set("momentum_balance", mo);
   }
   if (state == "completed" && opt_.write_output) {
     JsonObject validation;

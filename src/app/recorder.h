@@ -1,7 +1,7 @@
 // The recorder: everything a run writes and remembers about its own history — the output
-// folder (case.resolved.toml, forces.csv, probes.csv, bodies.csv, energy.csv, the VTK
-// series, summary.json), when the next probe row and VTK frame are due, and the peak force and
-// impulse of each body. It reads the stepper's state and never changes it.
+// folder (case.resolved.toml, forces.csv, probes.csv, bodies.csv, energy.csv, momentum.csv,
+// the VTK series, summary.json), when the next probe row and VTK frame are due, and the peak force
+// and impulse of each body. It reads the stepper's state and never changes it.
 //
 // Per step the driver calls before_step() (probe rows and VTK frames due at the current
 // time), then FsiStepper::step(), then after_step() (forces.csv row, peak, impulse by the
@@ -96,6 +96,10 @@ class Recorder {
     f("energy_largest_term", s.energy_scale_);
     f("energy_max_residual", s.energy_max_residual_);
     f("energy_last_residual", s.energy_last_residual_);
+    f("momentum_initial", s.momentum0_);
+    f("momentum_largest_term", s.momentum_scale_);
+    f("momentum_max_residual", s.momentum_max_residual_);
+    f("momentum_last_residual", s.momentum_last_residual_);
   }
   // Wall time of the segments before this one (resumed runs) plus `segment`.
   double wall_seconds(double segment) const { return wall_before_ + segment; }
@@ -105,6 +109,7 @@ class Recorder {
   void record_probes();
   void record_bodies();
   void record_energy();
+  void record_momentum();
   void write_frame();
 
   const CaseConfig& cfg_;
@@ -115,7 +120,7 @@ class Recorder {
   std::unique_ptr<OutputFolder> folder_;
   std::vector<std::string> warnings_;  // set-up warnings, for summary.json
   std::unique_ptr<VtkSeries> vtk_;
-  std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_, energy_csv_;
+  std::unique_ptr<CsvWriter> forces_, probes_csv_, bodies_csv_, energy_csv_, momentum_csv_;
   FailureLog failure_log_;                  // failed particles (app/failure_log.h)
   PartPeaks part_peaks_;                    // peak strain per part (app/part_peaks.h)
   std::unique_ptr<CsvWriter> failure_csv_;  // failure.csv, when a law can fail
@@ -132,6 +137,11 @@ class Recorder {
   // largest |term| written, the largest |residual| and the last residual [J/m].
   std::vector<double> energy0_;
   double energy_scale_ = 0.0, energy_max_residual_ = 0.0, energy_last_residual_ = 0.0;
+  // Momentum balance (momentum.csv): the water's momentum at t = 0, the largest |term|
+  // written, the largest |residual| per component and the last residual [N s/m].
+  Vec2 momentum0_;
+  double momentum_scale_ = 0.0;
+  Vec2 momentum_max_residual_, momentum_last_residual_;
 };
 
 }  // namespace slamsph

@@ -1,7 +1,8 @@
 // The one place that knows about threads (style.md §5). Every loop over particles goes
 // through Executor::for_each with a gather-style body (each iteration writes only its own
 // entries), so results are bit-identical for any thread count (no atomics, no
-// order-dependent reductions). max_of is exact in any order.
+// order-dependent reductions). max_of is exact in any order; sum_of adds in fixed blocks
+// whose partial sums are combined in block order, the same for any thread count.
 //
 // Loops that need several passes with a data dependency between them (the solid sub-step,
 // solid/elastic_substep.h) run inside one parallel region instead (Executor::run_team): every
@@ -18,6 +19,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace slamsph {
 
@@ -142,6 +144,31 @@ class Executor {
       if (v > m) m = v;
     }
     return m;
+  }
+
+  // Σ_i g(i) over [0, n) (T a value type with += and T{} = 0, e.g. double or Vec2): g(i) over
+  // blocks of kSumBlock consecutive items, each block summed in index order (in parallel),
+  // then the block sums in block order. Neither order depends on the thread count, so the
+  // result is bit-identical for any threads(). g may write item i's own entries (as in
+  // for_each).
+  static constexpr std::size_t kSumBlock = 1024;
+  template <class T, class G>
+  T sum_of(std::size_t n, G&& g) const {
+    const std::size_t blocks = (n + kSumBlock - 1) / kSumBlock;
+    std::vector<T> part(blocks, T{});
+    const long long count = static_cast<long long>(blocks);
+    if (count > 1 && threads_ > 1) count_region();
+#pragma omp parallel for schedule(static) num_threads(threads_) if (count > 1)
+    for (long long k = 0; k < count; ++k) {
+      const std::size_t b = static_cast<std::size_t>(k) * kSumBlock;
+      const std::size_t e = std::min(n, b + kSumBlock);
+      T s{};
+      for (std::size_t i = b; i < e; ++i) s += g(i);
+      part[static_cast<std::size_t>(k)] = s;
+    }
+    T total{};
+    for (const T& s : part) total += s;
+    return total;
   }
 
   static constexpr int kMaxThreads = 1024;

@@ -26,17 +26,19 @@ double absorbing_reference_density(const AbsorbingZone& z, const TaitEos& eos, V
   return eos.density(hydrostatic_pressure(z.surface - x.y, std::abs(z.gravity.y), eos));
 }
 
-void apply_absorbing_zone(FluidParticles& f, const AbsorbingZone& z, const TaitEos& eos, double dt,
+Vec2 apply_absorbing_zone(FluidParticles& f, const AbsorbingZone& z, const TaitEos& eos, double dt,
                           const Executor& exec) {
-  if (!z.active()) return;
-  exec.for_each(f.size(), [&](std::size_t i) {
+  if (!z.active()) return {};
+  return exec.sum_of<Vec2>(f.size(), [&](std::size_t i) {
     const double sigma = absorbing_rate(z, f.x[i]);
-    if (sigma == 0.0) return;
+    if (sigma == 0.0) return Vec2{};
     const double decay = std::exp(-sigma * dt);
     const double rho_h = absorbing_reference_density(z, eos, f.x[i]);
-    f.v[i] = decay * f.v[i];
+    const Vec2 v0 = f.v[i];
+    f.v[i] = decay * v0;
     f.rho[i] = rho_h + decay * (f.rho[i] - rho_h);
     f.p[i] = eos.pressure(f.rho[i]);
+    return f.m[i] * (f.v[i] - v0);
   });
 }
 

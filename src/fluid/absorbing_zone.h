@@ -45,8 +45,10 @@ double absorbing_rate(const AbsorbingZone& z, Vec2 x);
 double absorbing_reference_density(const AbsorbingZone& z, const TaitEos& eos, Vec2 x);
 
 // Relaxes v and ρ (and p = p(ρ)) of the particles inside the zone over a step dt:
-// v ← v e^{−σ dt}, ρ ← ρ_h + (ρ − ρ_h) e^{−σ dt}.
-void apply_absorbing_zone(FluidParticles& f, const AbsorbingZone& z, const TaitEos& eos, double dt,
+// v ← v e^{−σ dt}, ρ ← ρ_h + (ρ − ρ_h) e^{−σ dt}. Returns the momentum change it made,
+// Σ m (v_after − v_before) [N s/m] (the momentum balance, README "Momentum balance"): the
+// zone is the one force on the water that is not a pair force, gravity or the contact.
+Vec2 apply_absorbing_zone(FluidParticles& f, const AbsorbingZone& z, const TaitEos& eos, double dt,
                           const Executor& exec);
 
 }  // namespace slamsph
