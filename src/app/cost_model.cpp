@@ -6,10 +6,31 @@
 #include <limits>
 
 #include "app/simulation.h"
+#include "core/parallel.h"
 #include "solid/body_dynamics.h"
+#include "solid/elastic_substep.h"
 #include "solid/materials/johnson_cook.h"
 
 namespace slamsph {
+namespace {
+
+// y_small at x ≤ x_small, y_large at x ≥ x_large, linear in log x between.
+double log_interpolate(double x, double x_small, double x_large, double y_small, double y_large) {
+  if (x <= x_small) return y_small;
+  if (x >= x_large) return y_large;
+  const double f = std::log(x / x_small) / std::log(x_large / x_small);
+  return y_small + f * (y_large - y_small);
+}
+
+}  // namespace
+
+double CostPrediction::wall_seconds(int threads) const {
+  if (threads <= 1) return cpu_seconds();
+  double w = (fluid_seconds + lists_seconds + contact_seconds) / fluid_speedup;
+  for (const BodyCost& b : bodies)
+    if (b.elastic) w += b.seconds / b.speedup;
+  return w;
+}
 
 CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   const CaseConfig& cfg = sim.config();
@@ -18,6 +39,9 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   CostPrediction c;
   c.fluid_particles = fluid.size();
   c.contact_particles = sim.contact().size();
+  const InteractionLists& lists = sim.stepper().lists();
+  c.water_pairs = lists.ff().half.index.size();
+  c.contact_pairs = lists.fc().index.size() + lists.cf().index.size();
 
   // The speed of the step prediction (see the header).
   double v = 0.0;
@@ -69,48 +93,85 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   c.dt = dt;
   c.fluid_steps = static_cast<long>(std::ceil(num.end_time / dt * (1.0 - 1e-12)));
 
-  c.fluid_seconds = 1e-9 * k.fluid_ns * static_cast<double>(c.fluid_particles) *
-                    static_cast<double>(c.fluid_steps);
-  c.contact_seconds = 1e-9 * k.contact_ns * static_cast<double>(c.contact_particles) *
-                      static_cast<double>(c.fluid_steps);
-  for (BodyCost& bc : c.bodies) {
+  const double steps = static_cast<double>(c.fluid_steps);
+  const double nw = static_cast<double>(c.fluid_particles);
+  const double nc = static_cast<double>(c.contact_particles);
+  if (c.fluid_particles > 0) {
+    const double pair_ns = log_interpolate(nw, k.water_n_small, k.water_n_large,
+                                           k.water_pair_ns_small, k.water_pair_ns_large);
+    c.fluid_seconds =
+        1e-9 * steps * (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
+    const FsiStepper& st = sim.stepper();
+    const double per_rebuild =
+        v * dt > 0.0 ? st.params().neighbour_skin * st.system().kernel_c.h() / (v * dt)
+                     : std::numeric_limits<double>::infinity();
+    c.rebuilds = static_cast<long>(std::ceil(steps / std::max(1.0, per_rebuild)));
+    c.lists_seconds =
+        1e-9 * (steps * k.lists_ns + static_cast<double>(c.rebuilds) * k.rebuild_ns) * (nw + nc);
+    c.contact_seconds = 1e-9 * steps * k.contact_pair_ns * static_cast<double>(c.contact_pairs);
+  } else {
+    c.contact_seconds = 1e-9 * steps * k.dry_contact_ns * nc;
+  }
+  c.fluid_speedup = log_interpolate(nw, k.fluid_n_small, k.fluid_n_large, k.fluid_speedup_small,
+                                    k.fluid_speedup_large);
+  const Executor two(2);
+  for (std::size_t i = 0; i < c.bodies.size(); ++i) {
+    BodyCost& bc = c.bodies[i];
     if (!bc.elastic) continue;
+    const SolidBody& b = sim.bodies()[i];
+    bc.pairs = b.topology.pairs.index.size();
     // As solid/body_dynamics.cpp: ceil(Δt/Δt_s), at least one.
     bc.substeps_per_step =
         std::max(1L, static_cast<long>(std::ceil(dt / bc.stable_step * (1.0 - 1e-12))));
     const long total = bc.substeps_per_step * c.fluid_steps;
     c.solid_substeps += total;
-    c.solid_seconds += 1e-9 * k.solid_ns * bc.law_factor * static_cast<double>(bc.particles) *
-                       static_cast<double>(total);
+    const double n = static_cast<double>(bc.particles);
+    const double sub_ns =
+        log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_ns, k.solid_ns_large);
+    bc.seconds =
+        1e-9 * n * (sub_ns * bc.law_factor * static_cast<double>(total) + k.solid_call_ns * steps);
+    c.solid_seconds += bc.seconds;
+    // The team the sub-steps run on (solid/elastic_substep.cpp).
+    bc.speedup = two.threads_for(bc.particles, kSubstepParticlesPerThread) > 1
+                     ? log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_speedup_small,
+                                       k.solid_speedup_large)
+                     : 1.0;
   }
   return c;
 }
 
-std::string describe_cost(const CostPrediction& c) {
-  char buf[512];
+std::string describe_cost(const CostPrediction& c, int threads) {
+  char buf[640];
   std::string s;
   std::snprintf(buf, sizeof buf,
-                "predicted: %zu water and %zu contact particles; fluid step %.3g s (%s, speed "
-                "%.3g m/s), %ld fluid steps\n",
-                c.fluid_particles, c.contact_particles, c.dt, c.limiter.c_str(), c.speed,
-                c.fluid_steps);
+                "predicted: %zu water and %zu contact particles (%zu water and %zu contact "
+                "pairs listed); fluid step %.3g s (%s, speed %.3g m/s), %ld fluid steps, %ld "
+                "neighbour rebuilds\n",
+                c.fluid_particles, c.contact_particles, c.water_pairs, c.contact_pairs, c.dt,
+                c.limiter.c_str(), c.speed, c.fluid_steps, c.rebuilds);
   s += buf;
   for (const BodyCost& b : c.bodies) {
     if (b.elastic)
       std::snprintf(buf, sizeof buf,
                     "  body %s: %zu particles, elastic, stable step %.3g s, %ld sub-steps per "
-                    "fluid step\n",
-                    b.name.c_str(), b.particles, b.stable_step, b.substeps_per_step);
+                    "fluid step, law cost x%.3g\n",
+                    b.name.c_str(), b.particles, b.stable_step, b.substeps_per_step, b.law_factor);
     else
       std::snprintf(buf, sizeof buf, "  body %s: %zu particles, rigid\n", b.name.c_str(),
                     b.particles);
     s += buf;
   }
   std::snprintf(buf, sizeof buf,
-                "predicted CPU time on 1 thread: %.3g s (water %.3g s, contact %.3g s, solid "
-                "%.3g s; per-particle costs of app/cost_model.h, measured on a 2-core x86 "
-                "machine)\n",
-                c.cpu_seconds(), c.fluid_seconds, c.contact_seconds, c.solid_seconds);
+                "predicted CPU time on 1 thread: %.3g s (water %.3g s, neighbour lists %.3g s, "
+                "contact %.3g s, solid %.3g s)\n",
+                c.cpu_seconds(), c.fluid_seconds, c.lists_seconds, c.contact_seconds,
+                c.solid_seconds);
+  s += buf;
+  const int t = std::max(1, threads);
+  std::snprintf(buf, sizeof buf,
+                "predicted wall time on an idle machine of this kind (2 cores): %.3g s on 1 "
+                "thread, %.3g s on %d thread%s (per-particle costs of app/cost_model.h)\n",
+                c.wall_seconds(1), c.wall_seconds(t), t, t == 1 ? "" : "s");
   s += buf;
   return s;
 }

@@ -1,7 +1,8 @@
 // Cost model of a run (issue 13 item 5), printed by `slamsph check`: from the built case
-// (particle counts, kernels, the initial state) it predicts the fluid step, the number of
-// fluid steps to the end time, each elastic body's sub-steps per fluid step and the CPU
-// time on one thread, from per-particle costs measured on the development machine.
+// (particle and pair counts, kernels, the initial state) it predicts the fluid step, the
+// number of fluid steps and neighbour rebuilds to the end time, each elastic body's
+// sub-steps per fluid step, the CPU time on one thread and the wall time on one and two
+// threads, from costs measured on this machine kind (bench/calibrate_cost.py).
 //
 // Step prediction. The fluid step is the acoustic CFL step cfl h / (c0 + v) (spec §2) with
 // v the larger of the initial speeds (water, bodies, prescribed motion tables) and the
@@ -12,7 +13,23 @@
 // or no water) the step is the smallest stable step and every body takes one sub-step. Not
 // predicted: impacts that raise the fluid acceleration bound, bodies that speed up.
 //
-// Cost = steps × (N_fluid c_fluid + N_contact c_contact) + Σ_elastic steps × k × N c_solid.
+// Cost, per fluid step (CPU seconds on one thread; the phases of app/phase_times.h):
+//   water   = c_pair(N_water) N_ff + c_water N_water  (GSPH pair pass over the listed pairs,
+//             Verlet skin included; integration, limits, checks). c_pair rises log-linearly
+//             in N_water between its values at 3 200 and 166 500 particles: the pass leaves
+//             the caches (11 ns per pair at 3 200, 28 ns at 166 500 measured)
+//   lists   = c_lists (N_water + N_contact)            (the per-step displacement check)
+//           + c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
+//             steps (rebuilt when a particle has moved half the skin s 2 h_c,
+//             coupling/interaction_lists.h; v the predicted speed)
+//   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads)
+//   solid   = Σ_elastic N_b (k_law c_sub(N_b) n_b + c_call) (n_b sub-steps per fluid step;
+//             c_call the per-call set-up of the sub-step loop, solid/elastic_substep.cpp;
+//             c_sub log-linear in N_b between 10 000 and 60 000 particles, cache again)
+// The wall time on T threads divides the water, lists and contact phases by the measured
+// two-thread speed-up S_f(N_water) and each body's sub-steps by S_s(N_b) when its team has
+// two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise. This
+// machine kind has two cores: T > 2 is predicted as T = 2.
 #pragma once
 #include <string>
 #include <vector>
@@ -21,24 +38,34 @@ namespace slamsph {
 
 class Simulation;
 
-// CPU nanoseconds per particle and step on one thread. Measured 2026-11-29 on the 2-core
-// development machine (shared, load ~24; user CPU time, so the load inflates them little):
-//  - fluid and contact: `/usr/bin/time -f %U slamsph run CASE --no-output -q --threads 1
-//    --max-steps 1500` on cases/still_water.toml (5 000 water, 992 wall particles: 1.04 ms
-//    per step) and bench/dam_break_peer.toml (3 200 water, 2 612 wall: 0.887 ms per step),
-//    medians of 3, solved for the two unknowns;
-//  - solid: bench_solid BM_RingSubsteps case 0 and 1, 1 thread, CPU column (72 and 85 ns
-//    per particle-sub-step, SVK with viscosity and hourglass control).
-//  - the Johnson–Cook law's sub-step costs johnson_cook_factor times an SVK one: callgrind
-//    instruction ratio of bench_solid BM_RingSubstepsJohnsonCook to BM_RingSubsteps, 1.82 /
-//    1.75 / 1.73 at 2 514 / 10 052 / 60 000 particles on the elastic path (docs/validation.md
-//    §6); a yielding particle costs more (the Newton iteration), not modelled. J2 is taken at
-//    the SVK cost (not measured).
+// Costs measured on the 2-core development machine (AMD EPYC, 1 MiB L2 per core, 32 MiB
+// L3) with `bench/calibrate_cost.py build/slamsph --steps 60 --repeat 3` (each phase's CPU
+// time in 1-thread runs of the shipped cases, fitted by least squares on the relative
+// error; docs/validation.md §6 "Cost model" has the table and the machine's load).
+// Two-thread speed-ups: docs/validation.md §6 (throughput.sh, BM_RingSubsteps, idle).
 struct CostConstants {
-  double fluid_ns = 186.0;    // per water particle per fluid step
-  double contact_ns = 112.0;  // per contact (body surface and ghost) particle per fluid step
-  double solid_ns = 80.0;     // per elastic particle per sub-step (SVK)
-  double johnson_cook_factor = 1.75;
+  double water_pair_ns_small = 15.7;  // per listed water–water pair per fluid step, at
+  double water_pair_ns_large = 20.8;  // ≤ water_n_small / ≥ water_n_large water particles
+  double water_n_small = 3200, water_n_large = 166500;
+  double water_ns = 24.5;         // per water particle per fluid step
+  double lists_ns = 0.0;          // per water or contact particle per fluid step
+  double rebuild_ns = 165.0;      // per water or contact particle per neighbour rebuild
+  double contact_pair_ns = 37.5;  // per listed fluid–contact pair (both lists) per fluid step
+  double dry_contact_ns = 9.5;    // per contact particle per fluid step, no water
+  double solid_ns = 168.0;        // per elastic particle per sub-step (SVK), ≤ solid_n_small
+  // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
+  // 60 000-particle ring of bench_solid runs 2.6x slower per particle than the 10 052 one
+  // (BM_RingSubsteps, 1 thread, idle: 415 against 158 ns, docs/validation.md §6).
+  double solid_ns_large = 440.0;
+  double solid_call_ns = 36.6;        // per elastic particle per fluid step (sub-step set-up)
+  double johnson_cook_factor = 2.59;  // a Johnson–Cook sub-step against an SVK one
+  // Two-thread speed-up of the water phases: small at ≤ n_small water particles, large at
+  // ≥ n_large, log-linear between.
+  double fluid_speedup_small = 1.56, fluid_speedup_large = 1.99;
+  double fluid_n_small = 3200, fluid_n_large = 320000;
+  // Two-thread speed-up of a body's sub-steps whose team has two threads: likewise.
+  double solid_speedup_small = 1.35, solid_speedup_large = 1.64;
+  double solid_n_small = 10000, solid_n_large = 60000;
 };
 
 struct BodyCost {
@@ -48,25 +75,36 @@ struct BodyCost {
   double stable_step = 0.0;    // [s] elastic: at the start; rigid: +inf
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
   double law_factor = 1.0;     // sub-step cost of its material law relative to SVK
+  std::size_t pairs = 0;       // elastic: its total-Lagrangian pairs (each pair both ways)
+  double seconds = 0.0;        // elastic: predicted CPU seconds on one thread
+  double speedup = 1.0;        // elastic: its sub-steps' two-thread speed-up (1: one thread)
 };
 
 struct CostPrediction {
   std::size_t fluid_particles = 0;
   std::size_t contact_particles = 0;
+  std::size_t water_pairs = 0;    // listed water–water pairs at the start (each once)
+  std::size_t contact_pairs = 0;  // listed fluid→contact plus contact→fluid pairs
   std::vector<BodyCost> bodies;
   double speed = 0.0;       // the speed v of the step prediction [m/s]
   double dt = 0.0;          // predicted fluid step [s]
   std::string limiter;      // what sets it
   long fluid_steps = 0;     // to the end time
+  long rebuilds = 0;        // neighbour-list rebuilds to the end time
   long solid_substeps = 0;  // over the run, all elastic bodies
-  double fluid_seconds = 0.0, contact_seconds = 0.0, solid_seconds = 0.0;
-  double cpu_seconds() const { return fluid_seconds + contact_seconds + solid_seconds; }
+  double fluid_seconds = 0.0, lists_seconds = 0.0, contact_seconds = 0.0, solid_seconds = 0.0;
+  double fluid_speedup = 1.0;  // of the water, lists and contact phases on two threads
+  double cpu_seconds() const {
+    return fluid_seconds + lists_seconds + contact_seconds + solid_seconds;
+  }
+  // Wall seconds on `threads` threads of an idle machine of this kind (two cores).
+  double wall_seconds(int threads) const;
 };
 
 // The prediction for `sim` as constructed (time 0) to its end time.
 CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 
-// Several lines for `slamsph check`.
-std::string describe_cost(const CostPrediction& c);
+// Several lines for `slamsph check`; the wall time for 1 and for `threads` threads.
+std::string describe_cost(const CostPrediction& c, int threads);
 
 }  // namespace slamsph

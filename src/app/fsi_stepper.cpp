@@ -24,11 +24,13 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
   loads_.assign(sys_.bodies.size(), BodyLoad{});
   averages_.assign(sys_.bodies.size(), SubstepAverage{});
   received_.assign(sys_.bodies.size(), Vec2{});
-  evaluate_rates();
+  PhaseTimes setup;  // the initial rates are set-up, not a step's phases
+  PhaseClock clock;
+  evaluate_rates(clock, setup);
 }
 
 // The order of the operators is documented in the header; do not reorder.
-void FsiStepper::evaluate_rates() {
+void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& fluid = sys_.fluid;
   ContactParticles& contact = sys_.contact;
   gather_body_state(contact, sys_.layout, sys_.bodies);
@@ -36,7 +38,9 @@ void FsiStepper::evaluate_rates() {
     apply_substep_average(contact, sys_.layout, b, averages_[b]);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     apply_wall_acceleration(contact, sys_.layout, b, sys_.bodies[b], prm_.wall_acceleration);
+  clock.lap(t.contact);
   lists_->update(fluid, contact, exec_);
+  clock.lap(t.neighbour_lists);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};
   const ContactParams cp{sys_.eos.c0,
@@ -49,7 +53,9 @@ void FsiStepper::evaluate_rates() {
   if (fluid.size() > 0) {
     compute_virtual_state(contact, fluid, lists_->cf(), sys_.kernel_c, sys_.eos, prm_.gravity,
                           exec_);
+    clock.lap(t.contact);
     compute_gsph_fluid_rates(fluid, lists_->ff(), sys_.kernel_f, gp, exec_);
+    clock.lap(t.fluid_rates);
     add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_);
     compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_);
     leaked_ = update_leak_flags(fluid, contact, lists_->fc(), exec_);
@@ -62,12 +68,16 @@ void FsiStepper::evaluate_rates() {
   }
   for (std::size_t c = 0; c < contact.size(); ++c)
     loads_[contact.body[c]].viscous += contact.force_viscous[c];
+  clock.lap(t.contact);
 }
 
 void FsiStepper::step() {
   FluidParticles& f = sys_.fluid;
+  PhaseTimes& t = times_;
+  PhaseClock clock;
   const StepLimitParams sp{prm_.cfl, sys_.eos.c0, prm_.end_time, dual_.bodies_share_step(f.size())};
   limit_ = choose_time_step(f, sys_.bodies, sys_.kernel_f, sp, exec_);
+  clock.lap(t.step_limit);
   const double dt = limit_.dt;
   if (!(dt >= prm_.dt_floor)) {
     std::ostringstream os;
@@ -96,29 +106,35 @@ void FsiStepper::step() {
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos.pressure(f.rho[i]);
   });
+  clock.lap(t.fluid_integration);
   const bool average = prm_.substep_average && !dual_.bodies_share_step(f.size());
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
   solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity,
                                    !dual_.bodies_share_step(f.size()), exec_);
+  clock.lap(t.solid_substeps);
   // A body that blew up during its sub-steps is reported here, as a divergence with the
   // particle, before the neighbour rebuild in evaluate_rates() meets non-finite positions.
   check_bodies(time_ + dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], dt);
   time_ += dt;
-  evaluate_rates();
+  clock.lap(t.checks_and_zone);
+  evaluate_rates(clock, t);
   dual_.correct(sys_.bodies, dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
+  clock.lap(t.solid_substeps);
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.v[i] = f.v_half[i] + hdt * f.a[i];
     f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
     f.p[i] = eos.pressure(f.rho[i]);
   });
+  clock.lap(t.fluid_integration);
   // Acoustic damping near the chosen tank walls, over the whole step (absorbing_zone.h).
   zone_momentum_ += apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
   ++steps_;
   check_state();
+  clock.lap(t.checks_and_zone);
 }
 
 void FsiStepper::check_state() const {

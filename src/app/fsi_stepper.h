@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "app/dual_time_stepping.h"
+#include "app/phase_times.h"
 #include "app/time_step_limit.h"
 #include "core/box.h"
 #include "core/kernel.h"
@@ -107,6 +108,9 @@ class FsiStepper {
   // [N s/m].
   Vec2 body_fluid_impulse(std::size_t b) const { return received_[b]; }
   Vec2 absorbing_zone_momentum() const { return zone_momentum_; }
+  // Wall time of each phase over the steps this object took (app/phase_times.h); not
+  // checkpointed: a resumed run reports its own segment.
+  const PhaseTimes& phase_times() const { return times_; }
   const FsiParams& params() const { return prm_; }
   void set_end_time(double t) { prm_.end_time = t; }
 
@@ -130,7 +134,7 @@ class FsiStepper {
   void restore_loads(std::vector<BodyLoad> loads) { loads_ = std::move(loads); }
 
  private:
-  void evaluate_rates();
+  void evaluate_rates(PhaseClock& clock, PhaseTimes& t);
   void check_state() const;
   // Every body particle finite and inside the domain at `time`; else DivergenceError.
   void check_bodies(double time) const;
@@ -149,6 +153,7 @@ class FsiStepper {
   long leaked_ = 0;
   std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
   Vec2 zone_momentum_;
+  PhaseTimes times_;
 };
 
 }  // namespace slamsph

@@ -106,7 +106,8 @@ int run_or_check(const std::string& cmd, Request& req) {
     warn(sim);
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
-    std::printf(")\n%s", describe_cost(predict_cost(sim)).c_str());
+    const int threads = opt.threads > 0 ? opt.threads : Executor::default_threads();
+    std::printf(")\n%s", describe_cost(predict_cost(sim), threads).c_str());
     return 0;
   }
   opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
@@ -195,8 +196,16 @@ int dispatch(int argc, char** argv) {
                 "Write no files (benchmarks); default: write everything");
 
   CLI::App* check = app.add_subcommand(
-      "check", "Validate a case, build its particles and print their counts; no time step");
+      "check",
+      "Validate a case, build its particles and print their counts and the predicted cost "
+      "(steps, sub-steps, CPU and wall time); no time step");
   add_case_options(*check, req);
+  check
+      ->add_option("-t,--threads", req.run.threads,
+                   "Threads to predict the wall time for (default as for run: " +
+                       thread_default_text() + ")")
+      ->check(CLI::Range(1, Executor::kMaxThreads))
+      ->type_name("N");
 
   CLI::App* resume = app.add_subcommand(
       "resume",

@@ -418,6 +418,16 @@ void Recorder::write_summary(const RunStatus& status) const {
   const double ps = wall > 0.0 ? double(sys.fluid.size()) * double(st_.steps()) / wall : 0.0;
   summary.set("fluid_particle_steps_per_second", ps);
   summary.set("threads", exec_.threads());
+  // Where this process's wall time went (app/phase_times.h); a resumed run reports its own
+  // segment only, like cpu_seconds.
+  {
+    JsonObject split;
+    const PhaseTimes& t = st_.phase_times();
+    t.visit([&](const char* name, double s) { split.set(name, s); });
+    split.set("other", status.wall_seconds - t.total());  // set-up, output, progress
+    summary.set("time_split_s", split);
+    summary.set("cpu_seconds", status.cpu_seconds);
+  }
   summary.set("thread_wait_policy", Executor::wait_policy());
   summary.set("neighbour_rebuilds", st_.lists().rebuilds());
   summary.set("leaked_particles", st_.leaked_particles());

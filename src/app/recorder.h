@@ -48,6 +48,7 @@ struct RunStatus {
   std::string stopped;   // why a run with code 0 ended before end_time (--max-steps), else ""
   int signal = 0;        // SIGINT/SIGTERM that stopped the run, else 0
   double wall_seconds = 0.0;
+  double cpu_seconds = 0.0;  // user + system CPU time of all threads over wall_seconds
 };
 
 class Recorder {

@@ -1,13 +1,17 @@
 #include "app/simulation.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "app/case_builder.h"
 #include "app/case_checks.h"
@@ -20,8 +24,15 @@
 #include "io/progress_line.h"
 
 namespace slamsph {
-
 namespace {
+
+// User + system CPU time of this process, all its threads [s].
+double process_cpu_seconds() {
+  rusage u{};
+  if (getrusage(RUSAGE_SELF, &u) != 0) return 0.0;
+  auto sec = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return sec(u.ru_utime) + sec(u.ru_stime);
+}
 
 // VTK frames at and after `frame` (<set>_<frame:05>.vtp) from an interrupted run, which the
 // resumed run rewrites; removed so that none outlives the resumed run.
@@ -87,6 +98,7 @@ int Simulation::run() {
   ProgressLine progress(end, !opt_.quiet);
   if (!isatty(STDERR_FILENO)) progress.set_plain(10.0);
   const auto t0 = std::chrono::steady_clock::now();
+  const double cpu0 = process_cpu_seconds();
   auto wall = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
@@ -152,6 +164,7 @@ int Simulation::run() {
   }
   progress.finish();
   status.wall_seconds = wall();
+  status.cpu_seconds = process_cpu_seconds() - cpu0;
   bool summary_written = false;
   if (opt_.write_output) {
     try {
@@ -174,6 +187,20 @@ int Simulation::run() {
                  "particle-steps/s, %d thread%s)\n",
                  cfg_.name.c_str(), fluid().size(), steps(), time(), w, ps, exec_.threads(),
                  exec_.threads() == 1 ? "" : "s");
+    // Where the time went (app/phase_times.h), largest first.
+    std::vector<std::pair<double, const char*>> split;
+    stepper_->phase_times().visit([&](const char* n, double s) { split.emplace_back(s, n); });
+    split.emplace_back(w - stepper_->phase_times().total(), "other");
+    std::sort(split.begin(), split.end(),
+              [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::string line = "time split:";
+    for (const auto& [s, n] : split) {
+      if (w <= 0.0 || s < 0.005 * w) continue;
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " %s %.1f %%", n, 100.0 * s / w);
+      line += buf;
+    }
+    std::fprintf(stderr, "%s; CPU %.2f s\n", line.c_str(), status.cpu_seconds);
     if (!status.stopped.empty())
       std::fprintf(stderr, "stopped: %s; results are incomplete\n", status.stopped.c_str());
   }

@@ -47,6 +47,7 @@ class Simulation {
   const std::vector<std::string>& warnings() const { return warnings_; }
   const StepLimit& last_step_limit() const { return stepper_->last_step_limit(); }
   long solid_substeps() const { return stepper_->solid_substeps(); }
+  const FsiStepper& stepper() const { return *stepper_; }
   // Linear momentum of fluid + non-fixed bodies [kg m/s per m], with the impulse the fluid
   // already gave up that a sub-cycled body has still to receive (SolidBody::impulse_due).
   Vec2 total_momentum() const;

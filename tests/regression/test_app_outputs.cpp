@@ -404,6 +404,21 @@ TEST_F(Outputs, SummaryHasThePromisedKeysConsistentWithTheCsvs) {
   EXPECT_GT(wall, 0.0);
   EXPECT_NEAR(s["fluid_particle_steps_per_second"].number, nf * kSteps / wall,
               1e-6 * nf * kSteps / wall);
+  // Where the time went: every phase non-negative, together no more than the wall time
+  // (app/phase_times.h), and the CPU time of the loop positive.
+  ASSERT_TRUE(s.has("time_split_s"));
+  double phases = 0.0;
+  for (const char* k : {"step_limit", "fluid_integration", "solid_substeps", "neighbour_lists",
+                        "fluid_rates", "contact", "checks_and_zone"}) {
+    ASSERT_TRUE(s["time_split_s"].has(k)) << k;
+    EXPECT_GE(s["time_split_s"][k].number, 0.0) << k;
+    phases += s["time_split_s"][k].number;
+  }
+  EXPECT_GT(s["time_split_s"]["fluid_rates"].number, 0.0);
+  EXPECT_GT(s["time_split_s"]["solid_substeps"].number, 0.0);
+  EXPECT_LE(phases, wall);
+  EXPECT_NEAR(s["time_split_s"]["other"].number, wall - phases, 1e-9 * wall);
+  EXPECT_GT(s["cpu_seconds"].number, 0.0);
 
   // forces.csv: one row per fluid step plus the initial one; the last time is the end time.
   const Csv f = read_csv(out() / "forces.csv");

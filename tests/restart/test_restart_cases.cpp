@@ -60,15 +60,21 @@ std::string read_file(const fs::path& p) {
   return s.str();
 }
 
-// summary.json without the lines that depend on the wall clock or the thread count.
+// summary.json without the lines that depend on the wall clock or the thread count (the
+// wall and CPU times, the rate, the thread count and the "time_split_s" object).
 std::string comparable_summary(const fs::path& p) {
   std::istringstream in(read_file(p));
   std::string line, out;
-  while (std::getline(in, line))
-    if (line.find("\"wall_seconds\"") == std::string::npos &&
-        line.find("per_second") == std::string::npos &&
-        line.find("\"threads\"") == std::string::npos)
-      out += line + "\n";
+  bool in_split = false;
+  while (std::getline(in, line)) {
+    if (line.find("\"time_split_s\"") != std::string::npos) in_split = true;
+    const bool skip = in_split || line.find("\"wall_seconds\"") != std::string::npos ||
+                      line.find("\"cpu_seconds\"") != std::string::npos ||
+                      line.find("per_second") != std::string::npos ||
+                      line.find("\"threads\"") != std::string::npos;
+    if (in_split && line.find('}') != std::string::npos) in_split = false;
+    if (!skip) out += line + "\n";
+  }
   return out;
 }
 
