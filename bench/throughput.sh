@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Whole-run throughput: fluid particle-steps per second (fluid particles x fluid steps /
 # wall seconds, no output) on bench/dam_break_peer.toml at dx = 0.025 m (3200 particles)
-# and dx = 0.0025 m (320k), for 1 and 2 threads; median of REPEAT runs each.
+# and dx = 0.0025 m (320k), for 1 and 2 threads; median of REPEAT runs each. The case has
+# SPHinXsys' sound speed (c0 = 62.64 m/s); a fixed step count, so its end_time does not matter.
 # Usage: bench/throughput.sh [REPEAT=3]
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -151,6 +151,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   FsiParams& p = out.params;
   p.gravity = num.gravity;
   p.cfl = num.cfl;
+  p.acceleration_cfl = num.acceleration_cfl;
   p.dt_floor = num.dt_floor;
   p.end_time = num.end_time;
   p.dual_time_stepping = num.dual_time_stepping;

@@ -72,8 +72,9 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
     const double h = num.h_over_dx * num.dx;
     dt = num.cfl * h / (cfg.fluid.sound_speed + v);
     c.limiter = "fluid acoustic CFL";
-    if (amax > 0.0 && 0.25 * std::sqrt(h / amax) < dt) {
-      dt = 0.25 * std::sqrt(h / amax);
+    const double ca = num.acceleration_cfl;  // 0: the bound is off
+    if (ca > 0.0 && amax > 0.0 && ca * std::sqrt(h / amax) < dt) {
+      dt = ca * std::sqrt(h / amax);
       c.limiter = "fluid acceleration (initial)";
     }
   }

@@ -7,7 +7,7 @@
 // Step prediction. The fluid step is the acoustic CFL step cfl h / (c0 + v) (spec §2) with
 // v the larger of the initial speeds (water, bodies, prescribed motion tables) and the
 // free-fall speed sqrt(2 g H) over the water's height H, which the water reaches wherever
-// it collapses or is displaced; the initial acceleration bound 0.25 sqrt(h/|a|) if smaller
+// it collapses or is displaced; the initial acceleration bound C_a sqrt(h/|a|) if smaller
 // (app/time_step_limit.h). Elastic bodies take ceil(Δt/Δt_s) sub-steps (their stable step
 // at the start, solid/body_dynamics.h); when bodies share the step (dual time stepping off,
 // or no water) the step is the smallest stable step and every body takes one sub-step. Not

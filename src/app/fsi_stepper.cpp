@@ -75,8 +75,10 @@ void FsiStepper::step() {
   FluidParticles& f = sys_.fluid;
   PhaseTimes& t = times_;
   PhaseClock clock;
-  const StepLimitParams sp{prm_.cfl, sys_.eos.c0, prm_.end_time, dual_.bodies_share_step(f.size())};
+  const StepLimitParams sp{prm_.cfl, prm_.acceleration_cfl, sys_.eos.c0, prm_.end_time,
+                           dual_.bodies_share_step(f.size())};
   limit_ = choose_time_step(f, sys_.bodies, sys_.kernel_f, sp, exec_);
+  ++limiter_steps_[static_cast<std::size_t>(limit_.limiter)];
   clock.lap(t.step_limit);
   const double dt = limit_.dt;
   if (!(dt >= prm_.dt_floor)) {

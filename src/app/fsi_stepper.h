@@ -47,6 +47,7 @@ class Executor;
 struct FsiParams {
   Vec2 gravity;                    // [m/s^2]
   double cfl = 0.25;               // fluid acoustic CFL [-]
+  double acceleration_cfl = 0.25;  // acceleration bound factor, 0: off [-] (time_step_limit.h)
   double dt_floor = 1e-9;          // a step below this is divergence [s]
   double end_time = 0.0;           // [s] (only for the step of a case where nothing moves)
   bool dual_time_stepping = true;  // sub-cycle bodies inside a fluid step (spec §6)
@@ -100,6 +101,8 @@ class FsiStepper {
   long leaked_particles() const { return leaked_; }
   const StepLimit& last_step_limit() const { return limit_; }
   std::string describe_limit() const { return describe(limit_, sys_.bodies); }
+  // How many steps each criterion set since t = 0 (summary.json "step_limiters").
+  long steps_limited_by(StepLimiter l) const { return limiter_steps_[static_cast<std::size_t>(l)]; }
   BodyLoad body_load(std::size_t b) const { return loads_[b]; }
   const std::vector<BodyLoad>& body_loads() const { return loads_; }
   // Momentum balance (README "Momentum balance"), both accumulated since t = 0: the fluid
@@ -127,6 +130,7 @@ class FsiStepper {
     f("time", s.time_);
     f("steps", s.steps_);
     f("solid_substeps", s.solid_substeps_);
+    f("limiter_steps", s.limiter_steps_);
     f("leaked_particles", s.leaked_);
     f("body_fluid_impulse", s.received_);
     f("absorbing_zone_momentum", s.zone_momentum_);
@@ -150,6 +154,7 @@ class FsiStepper {
   double time_ = 0.0;
   long steps_ = 0;
   long solid_substeps_ = 0;
+  std::vector<long> limiter_steps_ = std::vector<long>(kStepLimiterCount, 0);  // per StepLimiter
   long leaked_ = 0;
   std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
   Vec2 zone_momentum_;

@@ -412,6 +412,14 @@ void Recorder::write_summary(const RunStatus& status) const {
   summary.set("particles", counts);
   summary.set("fluid_steps", st_.steps());
   summary.set("solid_substeps", st_.solid_substeps());
+  // Which criterion set the fluid step, in steps (app/time_step_limit.h); bodies together.
+  JsonObject limiters;
+  for (const StepLimiter l : {StepLimiter::FluidAcousticCfl, StepLimiter::FluidAcceleration,
+                              StepLimiter::SolidCfl, StepLimiter::EndTimeFraction}) {
+    const std::string name = l == StepLimiter::SolidCfl ? "solid CFL" : describe({0.0, l, 0}, {});
+    limiters.set(name, st_.steps_limited_by(l));
+  }
+  summary.set("step_limiters", limiters);
   summary.set("dual_time_stepping", cfg_.numerics.dual_time_stepping);
   summary.set("end_time_reached", st_.time());
   summary.set("wall_seconds", wall);  // the whole run, resumed segments included

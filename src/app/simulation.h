@@ -46,6 +46,7 @@ class Simulation {
   // Set-up warnings for this case (app/setup_warnings.h), computed once at construction.
   const std::vector<std::string>& warnings() const { return warnings_; }
   const StepLimit& last_step_limit() const { return stepper_->last_step_limit(); }
+  long steps_limited_by(StepLimiter l) const { return stepper_->steps_limited_by(l); }
   long solid_substeps() const { return stepper_->solid_substeps(); }
   const FsiStepper& stepper() const { return *stepper_; }
   // Linear momentum of fluid + non-fixed bodies [kg m/s per m], with the impulse the fluid

@@ -35,8 +35,8 @@ StepLimit choose_time_step(const FluidParticles& fluid, const std::vector<SolidB
         fluid.size(), [&](std::size_t i) { return norm2(fluid.a[i]); }, 0.0));
     const double h = kernel_f.h();
     lim = {prm.cfl * h / (prm.c0 + vmax), StepLimiter::FluidAcousticCfl, 0};
-    if (amax > 0.0) {
-      const double dta = 0.25 * std::sqrt(h / amax);
+    if (amax > 0.0 && prm.acceleration_cfl > 0.0) {
+      const double dta = prm.acceleration_cfl * std::sqrt(h / amax);
       if (dta < lim.dt) lim = {dta, StepLimiter::FluidAcceleration, 0};
     }
   }

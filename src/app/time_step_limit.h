@@ -16,10 +16,11 @@ class Executor;
 enum class StepLimiter {
   None,               // nothing limits (not yet chosen)
   FluidAcousticCfl,   // CFL h / (c0 + max|v|) (spec §2)
-  FluidAcceleration,  // 0.25 sqrt(h / max|a|)
+  FluidAcceleration,  // acceleration_cfl sqrt(h / max|a|), 0.25 by default
   SolidCfl,           // a body's stable step, when bodies share the fluid step (spec §3, §6)
   EndTimeFraction,    // nothing moves: end time / 100
 };
+inline constexpr std::size_t kStepLimiterCount = 5;  // the enumerators above
 
 struct StepLimit {
   double dt = 0.0;
@@ -35,6 +36,7 @@ inline bool limited_by_fluid(StepLimiter l) {
 
 struct StepLimitParams {
   double cfl = 0.25;               // fluid acoustic CFL number [-]
+  double acceleration_cfl = 0.25;  // factor of the bound sqrt(h / max|a|); 0 switches it off [-]
   double c0 = 0.0;                 // artificial sound speed [m/s]
   double end_time = 0.0;           // [s]
   bool bodies_share_step = false;  // false under dual time stepping (app/dual_time_stepping.h)

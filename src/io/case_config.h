@@ -22,12 +22,13 @@ struct NumericsConfig {
   double dx = 0.0;         // fluid particle spacing [m] (required)
   double h_over_dx = 1.3;  // smoothing length ratio [-]
   KernelType kernel = KernelType::WendlandC2;
-  double cfl = 0.25;            // fluid acoustic CFL number [-] (spec §2)
-  double solid_cfl = 0.5;       // solid CFL number [-] (spec §3)
-  double end_time = 0.0;        // [s] (required)
-  Vec2 gravity{0.0, -9.81};     // [m/s^2]
-  double neighbour_skin = 0.2;  // Verlet skin as a fraction of the kernel support [-]
-  bool substep_average = true;  // fluid sees sub-step averaged body kinematics (spec §6)
+  double cfl = 0.25;               // fluid acoustic CFL number [-] (spec §2)
+  double acceleration_cfl = 0.25;  // fluid step bound factor · sqrt(h/max|a|); 0: off [-]
+  double solid_cfl = 0.5;          // solid CFL number [-] (spec §3)
+  double end_time = 0.0;           // [s] (required)
+  Vec2 gravity{0.0, -9.81};        // [m/s^2]
+  double neighbour_skin = 0.2;     // Verlet skin as a fraction of the kernel support [-]
+  bool substep_average = true;     // fluid sees sub-step averaged body kinematics (spec §6)
   // Acceleration of a sub-cycled elastic body in the contact's static term (docs/model.md §4).
   WallAcceleration wall_acceleration = WallAcceleration::BodyMean;
   bool dual_time_stepping = true;  // sub-cycle solids inside a fluid step (spec §6)

@@ -174,14 +174,17 @@ std::string box_text(const Box& b) {
 NumericsConfig parse_numerics(const Reader& root) {
   auto r = root.table("numerics", "a [numerics] table");
   if (!r) root.missing("numerics", "a [numerics] table with dx, end_time and [numerics.domain]");
-  r->allow({"dx", "h_over_dx", "kernel", "cfl", "solid_cfl", "end_time", "gravity",
-            "neighbour_skin", "dual_time_stepping", "substep_average", "wall_acceleration",
-            "fluid_force_correction", "dt_floor", "domain"});
+  r->allow({"dx", "h_over_dx", "kernel", "cfl", "acceleration_cfl", "solid_cfl", "end_time",
+            "gravity", "neighbour_skin", "dual_time_stepping", "substep_average",
+            "wall_acceleration", "fluid_force_correction", "dt_floor", "domain"});
   NumericsConfig n;
   n.dx = num(*r, "dx", positive("a positive length in m"));
   n.h_over_dx = num(*r, "h_over_dx", {1.0, 3.0, false, false, "a ratio h/dx in [1, 3]"}, 1.3);
   n.kernel = kernel_type_from_name(r->choice("kernel", kKernels).value_or("wendland_c2"));
   n.cfl = num(*r, "cfl", {0.0, 1.0, true, false, "a CFL number in (0, 1]"}, 0.25);
+  n.acceleration_cfl =
+      num(*r, "acceleration_cfl",
+          {0.0, 1.0, false, false, "a factor in [0, 1] (0: no acceleration bound)"}, 0.25);
   n.solid_cfl = num(*r, "solid_cfl", {0.0, 1.0, true, false, "a CFL number in (0, 1]"}, 0.5);
   n.end_time = num(*r, "end_time", positive("a positive time in s"));
   n.gravity = vec(*r, "gravity", "accelerations in m/s^2", Vec2{0.0, -9.81});

@@ -76,6 +76,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
   o << "h_over_dx = " << d(n.h_over_dx) << "\n";
   o << "kernel = " << q(kernel_name(n.kernel)) << "\n";
   o << "cfl = " << d(n.cfl) << "\n";
+  o << "acceleration_cfl = " << d(n.acceleration_cfl) << "\n";
   o << "solid_cfl = " << d(n.solid_cfl) << "\n";
   o << "end_time = " << d(n.end_time) << "  # [s]\n";
   o << "gravity = " << v2(n.gravity) << "  # [m/s^2]\n";
