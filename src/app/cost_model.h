@@ -28,17 +28,19 @@ class Simulation;
 //    per step) and bench/dam_break_peer.toml (3 200 water, 2 612 wall: 0.887 ms per step),
 //    medians of 3, solved for the two unknowns;
 //  - solid: bench_solid BM_RingSubsteps case 0 and 1, 1 thread, CPU column (72 and 85 ns
-//    per particle-sub-step, SVK with viscosity and hourglass control).
+//    per particle-sub-step, SVK with viscosity and hourglass control). Measured before the
+//    sub-step of branch solidfast, which takes 1.45–1.47x fewer instructions
+//    (docs/validation.md §6): to be measured again on an idle machine.
 //  - the Johnson–Cook law's sub-step costs johnson_cook_factor times an SVK one: callgrind
-//    instruction ratio of bench_solid BM_RingSubstepsJohnsonCook to BM_RingSubsteps, 1.82 /
-//    1.75 / 1.73 at 2 514 / 10 052 / 60 000 particles on the elastic path (docs/validation.md
+//    instruction ratio of bench_solid BM_RingSubstepsJohnsonCook to BM_RingSubsteps, 1.71 /
+//    1.65 / 1.64 at 2 514 / 10 052 / 60 000 particles on the elastic path (docs/validation.md
 //    §6); a yielding particle costs more (the Newton iteration), not modelled. J2 is taken at
 //    the SVK cost (not measured).
 struct CostConstants {
   double fluid_ns = 186.0;    // per water particle per fluid step
   double contact_ns = 112.0;  // per contact (body surface and ghost) particle per fluid step
   double solid_ns = 80.0;     // per elastic particle per sub-step (SVK)
-  double johnson_cook_factor = 1.75;
+  double johnson_cook_factor = 1.65;
 };
 
 struct BodyCost {
