@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "core/parallel.h"
+#include "core/simd2.h"
 #include "solid/artificial_viscosity.h"
 #include "solid/eulerian_failed_interaction.h"
 #include "solid/hourglass_control.h"
@@ -14,9 +15,9 @@
 namespace slamsph {
 namespace {
 
-// kHourglass / kViscous: the material's hourglass control and artificial viscosity are on
-// (fixed per call, so the pair loops carry no test for them).
-template <class Law, bool kHourglass, bool kViscous>
+// kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;
+// kEulerian: body.eulerian.active (fixed per call, so the pair loops carry no test for them).
+template <class Law, bool kHourglass, bool kViscous, bool kEulerian>
 void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
                    const Executor& exec) {
   const std::size_t n = body.size();
@@ -24,7 +25,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const SolidMaterial& mat = body.material;
   SubstepWorkspace& w = body.substep;
   w.resize(n, topo.pairs.index.size());
-  if (body.eulerian.active) w.P_kin.resize(n);
+  if constexpr (kEulerian) w.P_kin.resize(n);
   body.f_av.resize(n);
   body.f_hg.resize(n);
   const double alpha = mat.hourglass;
@@ -32,7 +33,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const double hh = 0.5 * h;
   // Failed particles interact in the current configuration (eulerian_failed_interaction.h);
   // false for every body with no failed particle, whose loop is then the one below.
-  const bool eulerian = body.eulerian.active;
+  constexpr bool eulerian = kEulerian;
   const std::uint32_t* const start = topo.pairs.start.data();
   const std::uint32_t* const index = topo.pairs.index.data();
   const std::uint32_t* const reverse = topo.pair_reverse.data();
@@ -66,81 +67,114 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     x_out[i] = x[i] + h * vh_out[i];
   };
 
+  using simd::hi;
+  using simd::lo;
+  using simd::v2d;
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   bool swapped = false;  // the current positions are in w.x_next
   exec.run_team(threads, [&](const Team& team) {
     std::span<Vec2> x = body.x, xn = w.x_next, vh = w.vhalf, vhn = w.vhalf_next;
+    SubstepPairRef* const ref = w.ref.data();
+    SubstepPairRev* const rev = w.rev.data();
+    Vec2* const keps_k = w.keps.data();
+    SubstepViscous* const visc = w.viscous.data();
+    SubstepParticleMats* const mats = w.mats.data();
+    // Raw pointers: the compiler then keeps them in registers across the law's call.
+    Mat2* const Fb = body.F.data();
+    Mat2* const Pb = body.P.data();
+    const double* const V0 = body.V0.data();
+    const double* const rho0 = body.rho0.data();
+    const double* const m = body.m.data();
+    const std::uint8_t* const clamped = body.clamped.data();
+    const Vec2* const clamp_v = body.clamp_velocity.data();
+    const Vec2* const fext = w.fext.data();
+    const Vec2* const gsum = w.gsum.data();
+    const std::uint32_t* const upper = w.upper.data();
+    double* const stress_power = w.stress_power.data();
+    Vec2* const a = body.a.data();
+    Vec2* const v = body.v.data();
+    Vec2* const f_int = body.f_int.data();
+    Vec2* const f_av = body.f_av.data();
+    Vec2* const f_hg = body.f_hg.data();
+    double* const energy = body.e.data();
     const auto [b, e] = team.share(n);
     for (std::size_t i = b; i < e; ++i) {
       w.upper[i] = start[i + 1];
+      Vec2 gs;
       for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
         const std::uint32_t j = index[k];
         if (j > i && w.upper[i] == start[i + 1]) w.upper[i] = k;
-        w.X_ij[k] = body.X[j] - body.X[i];
-        w.g_rev[k] = grad0[reverse[k]];
-        if constexpr (kHourglass) w.kappa[k] = hourglass_pair_stiffness(body, topo, alpha, i, j, k);
-        if constexpr (kViscous) {
-          w.viscous_weight[k] = viscous_pair_weight(body, topo, i, k);
-          // The same expressions as viscous_force_on (artificial_viscosity.h).
-          w.pair_h[k] = 0.5 * (topo.h[i] + topo.h[j]);
-          w.pair_rho0[k] = 0.5 * (body.rho0[i] + body.rho0[j]);
-        }
+        SubstepPairRef& r = ref[k];
+        r.g = grad0[k];
+        r.X = body.X[j] - body.X[i];
+        r.j = j;
+        r.reverse = reverse[k];
+        r.kappa = kHourglass ? hourglass_pair_stiffness(body, topo, alpha, i, j, k) : 0.0;
+        // The same expressions as viscous_force_on (artificial_viscosity.h).
+        r.viscous_weight = kViscous ? viscous_pair_weight(body, topo, i, k) : 0.0;
+        r.h = 0.5 * (topo.h[i] + topo.h[j]);
+        r.rho0 = 0.5 * (body.rho0[i] + body.rho0[j]);
+        rev[k] = {grad0[reverse[k]], j, reverse[k]};
+        gs += grad0[k];
       }
+      w.gsum[i] = gs;
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, x, vh, x);
     }
     team.barrier();
     for (int step = 0; step < steps; ++step) {
-      if (eulerian) {  // current pairs of the switched particles at the drifted positions
+      if constexpr (eulerian) {  // current pairs of the switched particles at the drifted positions
         if (team.leader()) build_eulerian_pairs(body, x);
         team.barrier();
       }
       // Pass 1: F and Ḟ, the viscous pair terms (each pair once, from its lower particle:
       // they depend on x and v½ only), the law's committing update, stress power, hourglass
-      // moment.
+      // moment. Two-lane arithmetic (core/simd2.h) with the rounding of the Vec2 / Mat2 forms.
       for (std::size_t i = b; i < e; ++i) {
-        Mat2 F, Fdot;
+        simd::Cols Fc, Fdc;
         // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
         // its F comes from its current neighbours.
-        const Vec2 xi = x[i], vi = vh[i];
-        const std::uint32_t k0 = start[i], ku = w.upper[i], k1 = start[i + 1];
+        const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
+        const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
         for (std::uint32_t k = k0; k < ku; ++k) {
-          const std::uint32_t j = index[k];
-          F += outer(x[j] - xi, grad0[k]);
-          Fdot += outer(vh[j] - vi, grad0[k]);
+          const SubstepPairRef& r = ref[k];
+          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
+          simd::add_outer(Fc, simd::load(x[r.j]) - xi, gx, gy);
+          simd::add_outer(Fdc, simd::load(vh[r.j]) - vi, gx, gy);
         }
         for (std::uint32_t k = ku; k < k1; ++k) {
-          const std::uint32_t j = index[k];
-          const Vec2 xj = x[j], vj = vh[j];
-          F += outer(xj - xi, grad0[k]);
-          Fdot += outer(vj - vi, grad0[k]);
+          const SubstepPairRef& r = ref[k];
+          const v2d xj = simd::load(x[r.j]), vj = simd::load(vh[r.j]);
+          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
+          simd::add_outer(Fc, xj - xi, gx, gy);
+          simd::add_outer(Fdc, vj - vi, gx, gy);
           if constexpr (kViscous) {
             // viscous_force_on's pair term for i; for j it is the exact negative (x_ji =
             // −x_ij and v_ji = −v_ij bit for bit, Π and |c| symmetric), the heat the same.
-            const Vec2 xij = xi - xj, vij = vi - vj;
-            const double pi =
-                monaghan_pi(vij, xij, w.pair_h[k], w.pair_rho0[k], c, av_alpha, av_beta);
+            Vec2 xij, vij;
+            simd::store(xij, xi - xj);
+            simd::store(vij, vi - vj);
+            const double pi = monaghan_pi(vij, xij, r.h, r.rho0, c, av_alpha, av_beta);
             Vec2 f;
             double q = 0.0;
             if (pi != 0.0) {
-              const double s = pi * w.viscous_weight[k] / norm(xij);
+              const double s = pi * r.viscous_weight / norm(xij);
               f = s * xij;
               q = -0.5 * s * dot(xij, vij);
             }
-            const std::uint32_t rk = reverse[k];
-            w.f_visc[k] = f;
-            w.f_visc[rk] = -f;
-            w.q_visc[k] = q;
-            w.q_visc[rk] = q;
+            visc[k] = {f, q};
+            visc[r.reverse] = {-f, q};
           }
         }
+        const Mat2 F = simd::mat(Fc);
+        Mat2 Fdot = simd::mat(Fdc);
         // The material's F and Ḟ: the kinematic ones above (the hourglass control below
         // keeps the kinematic F) times the map C that keeps F continuous across a switch's
         // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
         // neighbours.
         Mat2 Fm = F;
-        if (eulerian) {
+        if constexpr (eulerian) {
           if (body.eulerian.switched[i]) {
             eulerian_motion(body, x, vh, h, i, Fm, Fdot);
           } else {
@@ -148,67 +182,77 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             Fdot = Fdot * body.F_rebase[i];
           }
         }
-        const Mat2 F_old = body.F[i], P_old = body.P[i];
-        body.F[i] = Fm;
+        const Mat2 F_old = Fb[i], P_old = Pb[i];
+        Fb[i] = Fm;
         const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-        body.P[i] = P;
-        if (eulerian) w.P_kin[i] = body.kinematic_P(i);
+        Pb[i] = P;
+        if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
-        w.stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / body.rho0[i];
+        stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
+        SubstepParticleMats& mi = mats[i];
+        // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+        const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
+        simd::store(mi.vp_c0, VP.c0);
+        simd::store(mi.vp_c1, VP.c1);
         if constexpr (kHourglass) {
           // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
-          Mat2 Gi;
+          simd::Cols Gi;
           for (std::uint32_t k = k0; k < k1; ++k) {
-            const Vec2 Xij = w.X_ij[k];
-            const Vec2 keps = w.kappa[k] * (F * Xij - (x[index[k]] - xi));
-            w.keps[k] = keps;
-            Gi += outer(keps, Xij);
+            const SubstepPairRef& r = ref[k];
+            const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
+            const v2d keps =
+                simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[r.j]) - xi));
+            simd::store(keps_k[k], keps);
+            simd::add_outer(Gi, keps, Xx, Xy);
           }
-          w.G[i] = Gi;
+          simd::store(mi.g_c0, Gi.c0);
+          simd::store(mi.g_c1, Gi.c1);
         }
       }
       if (team.leader() && step > 0) account(vhn);  // the previous sub-step's v½
       team.barrier();
       // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
-      // over i's pairs, each sum in its own order), second half kick, internal energy; next
-      // kick and drift.
+      // over i's pairs, each in its own accumulator), second half kick, internal energy; next
+      // kick and drift. The pair terms of i's own side, V0_i P_i g_ij and G_i g_ij, are
+      // summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum, per call): the same forces
+      // at a different rounding (tests/unit/test_solid_substep.cpp).
       const bool more = step + 1 < steps;
-      // The stress of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
-      const Mat2* const Pt = eulerian ? w.P_kin.data() : body.P.data();
       for (std::size_t i = b; i < e; ++i) {
-        Vec2 fs, fav, grad;
+        v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
         double heat = 0.0;
-        const Mat2 Pi = body.V0[i] * Pt[i];
-        const Mat2 Gi = kHourglass ? w.G[i] : Mat2{};
         for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-          const std::uint32_t j = index[k];
-          const Vec2 gk = grad0[k], gr = w.g_rev[k];
-          fs += Pi * gk;
-          fs -= body.V0[j] * (Pt[j] * gr);
+          const SubstepPairRev& r = rev[k];
+          const SubstepParticleMats& mj = mats[r.j];
+          const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
+          fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
           if constexpr (kViscous) {
-            fav += w.f_visc[k];
-            heat += w.q_visc[k];
+            fav += simd::load(visc[k].f);
+            heat += visc[k].q;
           }
           if constexpr (kHourglass) {
-            grad += w.G[j] * gr;
-            grad -= Gi * gk;
-            grad += w.keps[k];
-            grad -= w.keps[reverse[k]];
+            grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
+            grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
           }
         }
-        if (eulerian) {
+        const SubstepParticleMats& mi = mats[i];
+        const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
+        Vec2 fsv, favv, fhg;
+        simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
+        simd::store(favv, fav);
+        if constexpr (kHourglass)
+          simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
+        if constexpr (eulerian) {
           Vec2 fse, fve;
           eulerian_force_on(body, x, vh, i, fse, fve, heat);
-          fs += fse;
-          fav += fve;
+          fsv += fse;
+          favv += fve;
         }
-        const Vec2 fhg = kHourglass ? -grad : Vec2{};
-        body.f_av[i] = fav;
-        body.f_hg[i] = fhg;
-        body.f_int[i] = fs + fav + fhg;
-        body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
-        body.v[i] = body.clamped[i] ? body.clamp_velocity[i] : vh[i] + hh * body.a[i];
-        body.e[i] += h * (w.stress_power[i] + heat / body.m[i]);
+        f_av[i] = favv;
+        f_hg[i] = fhg;
+        f_int[i] = fsv + favv + fhg;
+        a[i] = clamped[i] ? Vec2{} : (f_int[i] + fext[i]) / m[i];
+        v[i] = clamped[i] ? clamp_v[i] : vh[i] + hh * a[i];
+        energy[i] += h * (stress_power[i] + heat / m[i]);
         if (more) kick_drift(i, x, vhn, xn);
       }
       team.barrier();
@@ -230,14 +274,19 @@ void substeps_dispatch(const Law& law, SolidBody& body, int steps, double h, Vec
   const SolidMaterial& mat = body.material;
   const bool hourglass = mat.hourglass != 0.0;
   const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
+  const bool eulerian = body.eulerian.active;
   if (hourglass && viscous)
-    substeps_with<Law, true, true>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec)
+             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec);
   else if (hourglass)
-    substeps_with<Law, true, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec)
+             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec);
   else if (viscous)
-    substeps_with<Law, false, true>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec)
+             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec);
   else
-    substeps_with<Law, false, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec)
+             : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec);
 }
 
 }  // namespace

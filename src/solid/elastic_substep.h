@@ -11,24 +11,29 @@
 //          slots of the pair (the force on j is the exact negative of the force on i and the
 //          heat the same number, so the per-particle sums below are those of
 //          viscous_force_on bit for bit, at half the square roots and divisions);
-//   pass 2 (particle i): the forces need P_j, G_j and κ ε of the reversed pairs of every
-//          neighbour; stress, viscous and hourglass sums in one loop over i's pairs (each in
-//          its own accumulator and order); then a_i, the second half kick, the internal
-//          energy and, for the next sub-step, the first half kick and drift into second
-//          buffers (neighbours still read the current x and v½ in this pass).
+//   pass 2 (particle i): the forces need V0_j P_j, G_j and κ ε of the reversed pairs of
+//          every neighbour; stress, viscous and hourglass sums in one loop over i's pairs
+//          (each in its own accumulator); then a_i, the second half kick, the internal energy
+//          and, for the next sub-step, the first half kick and drift into second buffers
+//          (neighbours still read the current x and v½ in this pass).
 // Each pass writes only its own particles' entries, apart from the viscous terms of pass 1,
-// whose second slot (j, i) no other particle writes; results are bit-identical to the
-// standalone operators' sequence (tl_pair_force.h, artificial_viscosity.h,
-// hourglass_control.h, deformation_gradient.h; tests/unit/test_solid_substep.cpp) and for
-// any thread count. With a team of two or more threads the whole call is one parallel region
-// with 2 barriers per sub-step, plus one after the first kick and drift
-// (Executor::sync_counts). Reference pair constants in CSR order (hourglass stiffness κ_ij,
-// viscous weight |c_ij|, pair h and ρ0, X_ij, the reverse gradient g_ji) are computed once
-// per call, not per sub-step, so the pair loops read them without indirection; the loops
-// are instantiated per law and per on/off state of hourglass control and viscosity. The
-// energy bookkeeping (dissipated, hourglass and external work) is summed serially in
-// particle order by the team's first thread while the others run pass 1 of the next
-// sub-step, so it too does not depend on the thread count.
+// whose second slot (j, i) no other particle writes, so results are bit-identical for any
+// thread count. The pair terms of i's own side in pass 2, V0_i P_i g_ij (stress) and
+// G_i g_ij (hourglass), are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij with Σ_j g_ij per
+// particle and call, and pass 1 stores V0_i P_i per particle, so the forces equal those of
+// the standalone operators (tl_pair_force.h, artificial_viscosity.h, hourglass_control.h,
+// deformation_gradient.h) to round-off, not bit for bit (tests/unit/test_solid_substep.cpp:
+// relative 1e-12). The pair loops use two-lane vectors (core/simd2.h; F, Ḟ and G by
+// columns), which round as the scalar forms. With a team of two or more threads the whole
+// call is one parallel region with 2 barriers per sub-step, plus one after the first kick
+// and drift (Executor::sync_counts). Reference pair constants in CSR order (g_ij, X_ij,
+// hourglass stiffness κ_ij, viscous weight |c_ij|, pair h and ρ0 in one record per pair for
+// pass 1; g_ji with j and the reverse slot in another for pass 2) are computed once per
+// call, not per sub-step, so the pair loops read them without indirection; the loops are
+// instantiated per law, per on/off state of hourglass control and viscosity and per
+// Eulerian state (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and
+// external work) is summed serially in particle order by the team's first thread while the
+// others run pass 1 of the next sub-step, so it too does not depend on the thread count.
 #pragma once
 #include <cstddef>
 

@@ -11,42 +11,64 @@
 
 namespace slamsph {
 
+// Reference constants of pair k = (i, j) read by pass 1 (F, Ḟ, hourglass moment, viscous
+// terms), in one record so that the pass streams one array.
+struct SubstepPairRef {
+  Vec2 g;                 // g_ij = topology.grad0[k] [1/m]
+  Vec2 X;                 // X_j − X_i [m]
+  double kappa;           // hourglass pair stiffness κ_ij [N/m^3·m^2]
+  double viscous_weight;  // |c_ij| of the artificial viscosity [m]
+  double h;               // symmetric smoothing length (h_i + h_j)/2 [m]
+  double rho0;            // (ρ0_i + ρ0_j)/2 [kg/m^3]
+  std::uint32_t j;
+  std::uint32_t reverse;  // position of (j, i)
+};
+// Those read by pass 2 (forces).
+struct SubstepPairRev {
+  Vec2 g_rev;  // g_ji = topology.grad0[pair_reverse[k]] [1/m]
+  std::uint32_t j;
+  std::uint32_t reverse;
+};
+// Viscous pair term of the current sub-step: force on i from j (−f of the reverse pair) and
+// the heating rate of each particle from the pair [W/m].
+struct SubstepViscous {
+  Vec2 f;
+  double q = 0.0;
+};
+// Per particle, gathered by the neighbours in pass 2: V0 P (the stress of the TL pair force)
+// and the hourglass moment G, each by columns (c0 = (xx, yx), c1 = (xy, yy)).
+struct SubstepParticleMats {
+  Vec2 vp_c0, vp_c1, g_c0, g_c1;
+};
+
 struct SubstepWorkspace {
   // Per pair k = (i, j), in the topology's CSR order: reference constants, filled at the
   // start of every call (so a rebuilt topology needs no invalidation), read in the pair
   // loops without the indirections through pair_reverse, X and the per-particle h and ρ0.
-  std::vector<double> kappa;           // hourglass pair stiffness κ_ij [N/m^3·m^2]
-  std::vector<double> viscous_weight;  // |c_ij| of the artificial viscosity [m]
-  std::vector<double> pair_h;          // symmetric smoothing length (h_i + h_j)/2 [m]
-  std::vector<double> pair_rho0;       // (ρ0_i + ρ0_j)/2 [kg/m^3]
-  std::vector<Vec2> X_ij;              // X_j − X_i [m]
-  std::vector<Vec2> g_rev;             // g_ji = topology.grad0[pair_reverse[k]] [1/m]
+  std::vector<SubstepPairRef> ref;
+  std::vector<SubstepPairRev> rev;
   // Per pair, of the current sub-step.
-  std::vector<Vec2> keps;      // κ_ij ε_ij (hourglass)
-  std::vector<Vec2> f_visc;    // viscous pair force on i from j (−f_visc of the reverse pair)
-  std::vector<double> q_visc;  // heating rate of each particle from the pair [W/m]
+  std::vector<Vec2> keps;               // κ_ij ε_ij (hourglass)
+  std::vector<SubstepViscous> viscous;  // viscous pair terms
   // Per particle.
-  std::vector<std::uint32_t> upper;  // first k of i's row with j > i (rows are sorted)
-  std::vector<Mat2> G;               // hourglass moment Σ_j κ ε ⊗ X_ij
-  std::vector<Vec2> fext;            // fluid force + weight, held over the call [N/m]
-  std::vector<Vec2> vhalf;           // half-step velocity (two buffers, swapped)
+  std::vector<std::uint32_t> upper;       // first k of i's row with j > i (rows are sorted)
+  std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
+  std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
+  std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
+  std::vector<Vec2> vhalf;                // half-step velocity (two buffers, swapped)
   std::vector<Vec2> vhalf_next;
   std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
   void resize(std::size_t particles, std::size_t pairs) {
-    kappa.resize(pairs);
-    viscous_weight.resize(pairs);
-    pair_h.resize(pairs);
-    pair_rho0.resize(pairs);
-    X_ij.resize(pairs);
-    g_rev.resize(pairs);
+    ref.resize(pairs);
+    rev.resize(pairs);
     keps.resize(pairs);
-    f_visc.resize(pairs);
-    q_visc.resize(pairs);
+    viscous.resize(pairs);
     upper.resize(particles);
-    G.resize(particles);
+    gsum.resize(particles);
+    mats.resize(particles);
     fext.resize(particles);
     vhalf.resize(particles);
     vhalf_next.resize(particles);

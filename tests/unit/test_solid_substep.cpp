@@ -1,16 +1,20 @@
 // The fused elastic sub-step (solid/elastic_substep.h) against the operator sequence it
 // replaces: the same kick–drift–kick loop written with the standalone operators
 // (deformation gradient, update_stress, stress force, artificial viscosity, hourglass
-// control, one pass each) gives bit-identical positions, velocities, F, P, internal energy,
-// history and energy accumulators, for SVK and for J2 plasticity (which exercises the
+// control, one pass each) gives the same positions, velocities, F, P, forces, internal
+// energy, history and energy accumulators to round-off (relative 1e-12; the fused loop sums
+// the pair forces in another order), for SVK and for J2 plasticity (which exercises the
 // law's history). Also: the synchronisation per sub-step (one parallel region per call, two
 // barriers per sub-step plus one) and the thread count by body size, and 1 vs 2 threads
 // bit-identical on a body large enough for a team of two.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <vector>
 
 #include "core/parallel.h"
@@ -61,6 +65,66 @@ void expect_identical(const SolidBody& a, const SolidBody& b) {
   EXPECT_TRUE(same(a.dissipated, b.dissipated)) << a.dissipated << " " << b.dissipated;
   EXPECT_TRUE(same(a.hourglass_work, b.hourglass_work));
   EXPECT_TRUE(same(a.external_work, b.external_work));
+}
+
+double magnitude(double a) {
+  return std::abs(a);
+}
+double magnitude(Vec2 a) {
+  return norm(a);
+}
+double magnitude(const Mat2& a) {
+  return std::sqrt(ddot(a, a));
+}
+// max_i |a_i − b_i| / max_i |b_i| (0 for two zero fields).
+template <class T>
+double relative_difference(const std::vector<T>& a, const std::vector<T>& b) {
+  if (a.size() != b.size()) return 1.0;
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    diff = std::max(diff, magnitude(a[i] - b[i]));
+    scale = std::max(scale, magnitude(b[i]));
+  }
+  return scale > 0.0 ? diff / scale : diff;
+}
+
+// Round-off agreement: the fused loop sums V0_i P_i g_ij and G_i g_ij of i's own side as
+// V0_i P_i Σ_j g_ij and G_i Σ_j g_ij and multiplies V0_j P_j before the gradient
+// (elastic_substep.h), so its forces differ from the operators' in the last bits; over the
+// 21 sub-steps every field of the body stays within `tol` of the reference relative to the
+// field's largest entry. tol = 1e-12, eight times the largest difference measured (1.3e-13,
+// the viscous force; x and F ≤ 6e-16, v, P and e ≤ 6e-14: the forces are small differences
+// of pair terms, and the dynamics carries their last bits over the sub-steps). Print the
+// differences with SLAMSPH_PRINT_DIFF=1.
+void expect_round_off(const SolidBody& a, const SolidBody& b, double tol) {
+  EXPECT_LE(relative_difference(a.x, b.x), tol) << "x";
+  EXPECT_LE(relative_difference(a.v, b.v), tol) << "v";
+  EXPECT_LE(relative_difference(a.a, b.a), tol) << "a";
+  EXPECT_LE(relative_difference(a.F, b.F), tol) << "F";
+  EXPECT_LE(relative_difference(a.P, b.P), tol) << "P";
+  EXPECT_LE(relative_difference(a.e, b.e), tol) << "e";
+  EXPECT_LE(relative_difference(a.f_int, b.f_int), tol) << "f_int";
+  EXPECT_LE(relative_difference(a.f_av, b.f_av), tol) << "f_av";
+  EXPECT_LE(relative_difference(a.f_hg, b.f_hg), tol) << "f_hg";
+  ASSERT_EQ(a.history.values.size(), b.history.values.size());
+  for (std::size_t k = 0; k < a.history.values.size(); ++k)
+    EXPECT_LE(relative_difference(a.history.values[k], b.history.values[k]), tol)
+        << "history " << k;
+  EXPECT_EQ(a.history.updates, b.history.updates);
+  EXPECT_LE(std::abs(a.dissipated - b.dissipated), tol * std::abs(b.dissipated));
+  EXPECT_LE(std::abs(a.hourglass_work - b.hourglass_work), tol * std::abs(b.hourglass_work));
+  EXPECT_LE(std::abs(a.external_work - b.external_work), tol * std::abs(b.external_work));
+  if (std::getenv("SLAMSPH_PRINT_DIFF"))
+    std::printf(
+        "x %.2g v %.2g a %.2g F %.2g P %.2g e %.2g f_int %.2g f_av %.2g f_hg %.2g "
+        "diss %.2g hg %.2g ext %.2g\n",
+        relative_difference(a.x, b.x), relative_difference(a.v, b.v), relative_difference(a.a, b.a),
+        relative_difference(a.F, b.F), relative_difference(a.P, b.P), relative_difference(a.e, b.e),
+        relative_difference(a.f_int, b.f_int), relative_difference(a.f_av, b.f_av),
+        relative_difference(a.f_hg, b.f_hg),
+        std::abs(a.dissipated - b.dissipated) / std::abs(b.dissipated),
+        std::abs(a.hourglass_work - b.hourglass_work) / std::abs(b.hourglass_work),
+        std::abs(a.external_work - b.external_work) / std::abs(b.external_work));
 }
 
 // The sub-step loop as it was before the fusion: one operator pass at a time.
@@ -133,7 +197,7 @@ void fused_matches_reference(const ElasticMaterialInput& mat) {
     run_elastic_substeps(fused, 7, h, {0.0, -9.81}, exec);
     reference_substeps(ref, 7, h, {0.0, -9.81}, exec);
   }
-  expect_identical(fused, ref);
+  expect_round_off(fused, ref, 1e-12);
   // Not a trivial match: the body moved, deformed and heated.
   EXPECT_GT(norm(fused.x.back() - fused.X.back()), 1e-4);
   EXPECT_GT(fused.dissipated, 0.0);
