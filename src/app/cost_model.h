@@ -44,21 +44,21 @@ class Simulation;
 // error; docs/validation.md §6 "Cost model" has the table and the machine's load).
 // Two-thread speed-ups: docs/validation.md §6 (throughput.sh, BM_RingSubsteps, idle).
 struct CostConstants {
-  double water_pair_ns_small = 15.7;  // per listed water–water pair per fluid step, at
-  double water_pair_ns_large = 20.8;  // ≤ water_n_small / ≥ water_n_large water particles
+  double water_pair_ns_small = 11.8;  // per listed water–water pair per fluid step, at
+  double water_pair_ns_large = 20.6;  // ≤ water_n_small / ≥ water_n_large water particles
   double water_n_small = 3200, water_n_large = 166500;
-  double water_ns = 24.5;         // per water particle per fluid step
+  double water_ns = 21.4;         // per water particle per fluid step
   double lists_ns = 0.0;          // per water or contact particle per fluid step
-  double rebuild_ns = 165.0;      // per water or contact particle per neighbour rebuild
-  double contact_pair_ns = 37.5;  // per listed fluid–contact pair (both lists) per fluid step
-  double dry_contact_ns = 9.5;    // per contact particle per fluid step, no water
-  double solid_ns = 168.0;        // per elastic particle per sub-step (SVK), ≤ solid_n_small
+  double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
+  double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
+  double dry_contact_ns = 12.0;   // per contact particle per fluid step, no water
+  double solid_ns = 100.0;        // per elastic particle per sub-step (SVK), ≤ solid_n_small
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
-  // 60 000-particle ring of bench_solid runs 2.6x slower per particle than the 10 052 one
-  // (BM_RingSubsteps, 1 thread, idle: 415 against 158 ns, docs/validation.md §6).
-  double solid_ns_large = 440.0;
-  double solid_call_ns = 36.6;        // per elastic particle per fluid step (sub-step set-up)
-  double johnson_cook_factor = 2.59;  // a Johnson–Cook sub-step against an SVK one
+  // 60 000-particle ring of bench_solid runs 1.68x slower per particle than the 10 052 one
+  // (BM_RingSubsteps, 1 thread, medians of 3: 200 against 119 ns, docs/validation.md §6).
+  double solid_ns_large = 168.0;
+  double solid_call_ns = 8.2;         // per elastic particle per fluid step (sub-step set-up)
+  double johnson_cook_factor = 2.56;  // a Johnson–Cook sub-step against an SVK one
   // Two-thread speed-up of the water phases: small at ≤ n_small water particles, large at
   // ≥ n_large, log-linear between.
   double fluid_speedup_small = 1.56, fluid_speedup_large = 1.99;
