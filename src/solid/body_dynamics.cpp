@@ -150,6 +150,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
       throw InputError("body '" + cfg.name + "': dx must be the finest particle spacing");
   }
   body.dissipated = body.hourglass_work = body.external_work = body.clamp_work = 0.0;
+  body.switch_released = 0.0;
   body.last_substeps = 0;
 
   // Clamps.

@@ -7,6 +7,7 @@
 #include "core/parallel.h"
 #include "solid/artificial_viscosity.h"
 #include "solid/deformation_gradient.h"
+#include "solid/hourglass_control.h"
 
 namespace slamsph {
 namespace {
@@ -48,6 +49,12 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   if (count == e.failed_count) return e.active;  // `failed` is sticky: same count, same set
   if (!e.active) e.reference_pairs = body.topology.pairs;  // still the full reference build
   e.failed_count = count;
+  // The hourglass springs' potential is a function of the topology: the rebuild removes the
+  // springs of the switched particles and re-measures the remaining ones against the new,
+  // one-sided F_kin. No force does that work, so the energy balance books the jump as
+  // released by the switch (SolidBody::switch_released; docs/model.md §3).
+  const double alpha = body.material.hourglass;
+  const double hg_before = alpha != 0.0 ? hourglass_energy(body, body.topology, alpha, exec) : 0.0;
   const NeighbourList& ref = e.reference_pairs;
 
   e.switched.assign(n, 0);
@@ -103,6 +110,8 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   for (std::size_t i = 0; i < n; ++i)
     if (e.switched[i]) e.members.push_back(static_cast<std::uint32_t>(i));
   e.active = !e.members.empty();
+  if (alpha != 0.0)
+    body.switch_released += hg_before - hourglass_energy(body, body.topology, alpha, exec);
   return e.active;
 }
 
