@@ -53,7 +53,9 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   // springs of the switched particles and re-measures the remaining ones against the new,
   // one-sided F_kin. No force does that work, so the energy balance books the jump as
   // released by the switch (SolidBody::switch_released; docs/model.md §3).
-  const double alpha = body.material.hourglass;
+  // A resumed run's rebuild at restore (F_rebase_failed already == count) books nothing: the
+  // checkpointed switch_released has it.
+  const double alpha = body.F_rebase_failed != count ? body.material.hourglass : 0.0;
   const double hg_before = alpha != 0.0 ? hourglass_energy(body, body.topology, alpha, exec) : 0.0;
   const NeighbourList& ref = e.reference_pairs;
 

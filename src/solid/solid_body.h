@@ -116,12 +116,12 @@ struct SolidBody {
   int last_substeps = 0;   // sub-steps taken by the last advance_body call
 
   // Energy accumulators since setup [J/m].
-  double dissipated = 0.0;      // work removed by artificial viscosity
-  double hourglass_work = 0.0;  // work done against the hourglass control (its potential
-                                // is reported by body_energies; this is a cross-check)
-  double external_work = 0.0;   // work done by gravity and the fluid force (rigid_prescribed:
-                                // the fluid force only; rigid_fixed: none)
-  double clamp_work = 0.0;      // work done on the body by moving clamps (their reactions)
+  double dissipated = 0.0;       // work removed by artificial viscosity
+  double hourglass_work = 0.0;   // work done against the hourglass control (its potential
+                                 // is reported by body_energies; this is a cross-check)
+  double external_work = 0.0;    // work done by gravity and the fluid force (rigid_prescribed:
+                                 // the fluid force only; rigid_fixed: none)
+  double clamp_work = 0.0;       // work done on the body by moving clamps (their reactions)
   double switch_released = 0.0;  // hourglass potential removed by the Eulerian switch's
                                  // topology rebuilds (solid/eulerian_failed_interaction.h)
 
