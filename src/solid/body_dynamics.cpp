@@ -87,6 +87,10 @@ void advance_elastic(SolidBody& body, double t, double dt, Vec2 gravity, const E
     internal_forces(body, body.v, exec, s);
   }
   run_elastic_substeps(body, steps, h, g, exec);
+  // And again at the end, so that between steps the topology always matches the `failed`
+  // flags: the next step's size (choose_time_step reads the topology's max_gradient) is then
+  // the same in a run resumed from this point, whose restore rebuilds from the flags.
+  update_eulerian_switch(body, exec);
 }
 
 // The smoothing-length ratio at which solid_cfl = 0.5 was measured to sit at 85-90 % of the
@@ -150,6 +154,7 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
       throw InputError("body '" + cfg.name + "': dx must be the finest particle spacing");
   }
   body.dissipated = body.hourglass_work = body.external_work = body.clamp_work = 0.0;
+  body.switch_released = 0.0;
   body.last_substeps = 0;
 
   // Clamps.

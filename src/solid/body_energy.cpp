@@ -75,7 +75,8 @@ BodyEnergyTerms body_energy_terms(const SolidBody& body, Vec2 gravity) {
     t.kinetic = 0.5 * r.mass * norm2(r.vel) + 0.5 * r.inertia * r.omega * r.omega;
     t.potential = -r.mass * dot(g, r.com);
   }
-  t.dissipated = t.viscous + t.plastic;
+  // The hourglass potential the Eulerian switch's rebuilds released (0 without a switch).
+  t.dissipated = t.viscous + t.plastic + body.switch_released;
   return t;
 }
 

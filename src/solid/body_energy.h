@@ -14,7 +14,7 @@ struct BodyEnergyTerms {
   double hourglass = 0.0;      // hourglass-control potential E_hg [J/m]
   double viscous = 0.0;        // work removed by the solid's artificial viscosity [J/m]
   double plastic = 0.0;        // plastic work (J2 law), see plastic_work [J/m]
-  double dissipated = 0.0;     // viscous + plastic [J/m]
+  double dissipated = 0.0;     // viscous + plastic + switch_released (SolidBody) [J/m]
   double potential = 0.0;      // gravity: −Σ m g·x (rigid: −M g·x_com); 0 if the body
                                // does not feel gravity [J/m]
   double external_work = 0.0;  // work of gravity and the fluid since set-up [J/m]

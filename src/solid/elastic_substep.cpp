@@ -25,7 +25,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const SolidMaterial& mat = body.material;
   SubstepWorkspace& w = body.substep;
   w.resize(n, topo.pairs.index.size());
-  if constexpr (kEulerian) w.P_kin.resize(n);
+  if constexpr (kEulerian) {
+    w.P_kin.resize(n);
+    body.eulerian.stress_map.assign(n, Mat2{});  // intact particles keep 0
+  }
   body.f_av.resize(n);
   body.f_hg.resize(n);
   const double alpha = mat.hourglass;
@@ -173,10 +176,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         // keeps the kinematic F) times the map C that keeps F continuous across a switch's
         // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
         // neighbours.
-        Mat2 Fm = F;
+        Mat2 Fm = F, K;
+        const bool switched = eulerian && body.eulerian.switched[i];
         if constexpr (eulerian) {
-          if (body.eulerian.switched[i]) {
-            eulerian_motion(body, x, vh, h, i, Fm, Fdot);
+          if (switched) {
+            eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
           } else {
             Fm = F * body.F_rebase[i];
             Fdot = Fdot * body.F_rebase[i];
@@ -187,6 +191,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
         Pb[i] = P;
         if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
+        if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
         stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
         SubstepParticleMats& mi = mats[i];
@@ -243,7 +248,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
         if constexpr (eulerian) {
           Vec2 fse, fve;
-          eulerian_force_on(body, x, vh, i, fse, fve, heat);
+          eulerian_force_on(body, x, vh, body.eulerian.stress_map, i, fse, fve, heat);
           fsv += fse;
           favv += fve;
         }

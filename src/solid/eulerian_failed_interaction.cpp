@@ -7,6 +7,7 @@
 #include "core/parallel.h"
 #include "solid/artificial_viscosity.h"
 #include "solid/deformation_gradient.h"
+#include "solid/hourglass_control.h"
 
 namespace slamsph {
 namespace {
@@ -21,17 +22,6 @@ SolidTopology empty_topology(const SolidBody& body) {
   t.part = body.part.empty() ? std::vector<std::uint32_t>(n, 0) : body.part;
   t.h = body.topology.h;
   return t;
-}
-
-// The body's Cauchy stress term T/ρ² of particle i (header comment).
-Mat2 stress_term(const SolidBody& body, std::size_t i) {
-  const Mat2& F = body.F[i];
-  const double J = det(F);
-  const Mat2 s = (1.0 / J) * (body.P[i] * transpose(F));
-  const Mat2 sigma = 0.5 * (s + transpose(s));
-  const Mat2 T = 2.0 * sigma - 0.5 * trace(sigma) * Mat2::identity();
-  const double rho = body.rho0[i] / J;
-  return (1.0 / (rho * rho)) * T;
 }
 
 Kernel pair_kernel(const SolidBody& body, std::size_t i, std::size_t j) {
@@ -59,6 +49,14 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   if (count == e.failed_count) return e.active;  // `failed` is sticky: same count, same set
   if (!e.active) e.reference_pairs = body.topology.pairs;  // still the full reference build
   e.failed_count = count;
+  // The hourglass springs' potential is a function of the topology: the rebuild removes the
+  // springs of the switched particles and re-measures the remaining ones against the new,
+  // one-sided F_kin. No force does that work, so the energy balance books the jump as
+  // released by the switch (SolidBody::switch_released; docs/model.md §3).
+  // A resumed run's rebuild at restore (F_rebase_failed already == count) books nothing: the
+  // checkpointed switch_released has it.
+  const double alpha = body.F_rebase_failed != count ? body.material.hourglass : 0.0;
+  const double hg_before = alpha != 0.0 ? hourglass_energy(body, body.topology, alpha, exec) : 0.0;
   const NeighbourList& ref = e.reference_pairs;
 
   e.switched.assign(n, 0);
@@ -114,6 +112,8 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec) {
   for (std::size_t i = 0; i < n; ++i)
     if (e.switched[i]) e.members.push_back(static_cast<std::uint32_t>(i));
   e.active = !e.members.empty();
+  if (alpha != 0.0)
+    body.switch_released += hg_before - hourglass_energy(body, body.topology, alpha, exec);
   return e.active;
 }
 
@@ -158,8 +158,13 @@ void build_eulerian_pairs(SolidBody& body, std::span<const Vec2> x) {
   }
 }
 
-void eulerian_motion(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
-                     double h, std::size_t i, Mat2& F_new, Mat2& Fdot) {
+namespace {
+
+// L_i = Σ_j (v_j − v_i) ⊗ g_ij with g_ij = K_i grad_ij, grad_ij = V0_j ∇_iW_ij, and the
+// correction K_i = M_i⁻ᵀ, M_i = Σ_j (x_j − x_i) ⊗ grad_ij (so that Σ_j (x_j − x_i) ⊗ g_ij = 1:
+// L exact for a linear velocity field); K = 1 where det M <= 0.1 (an almost isolated particle).
+void velocity_gradient(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
+                       std::size_t i, Mat2& L, Mat2& K) {
   const NeighbourList& p = body.eulerian.pairs;
   Mat2 G, M;
   const Vec2 xi = x[i], vi = v[i];
@@ -172,43 +177,61 @@ void eulerian_motion(const SolidBody& body, std::span<const Vec2> x, std::span<c
     G += outer(v[j] - vi, grad);
     M += outer(x[j] - xi, grad);
   }
-  // Corrected gradient where the neighbourhood spans the plane (M ≈ 1 inside a body).
-  const Mat2 L = det(M) > 0.1 ? G * inverse(M) : G;
+  const bool corrected = det(M) > 0.1;
+  const Mat2 Minv = corrected ? inverse(M) : Mat2::identity();
+  L = G * Minv;
+  K = transpose(Minv);
+}
+
+}  // namespace
+
+void eulerian_motion(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
+                     double h, std::size_t i, Mat2& F_new, Mat2& Fdot, Mat2& K) {
+  Mat2 L;
+  velocity_gradient(body, x, v, i, L, K);
   const Mat2 I = Mat2::identity();
   const Mat2& F_old = body.F[i];
   F_new = inverse(I - (0.5 * h) * L) * ((I + (0.5 * h) * L) * F_old);
   Fdot = L * (0.5 * (F_old + F_new));
 }
 
+Mat2 eulerian_stress_map(const SolidBody& body, std::size_t i, const Mat2& K) {
+  // Kirchhoff stress τ = P Fᵀ (= J σ), symmetrised: the law's P Fᵀ is symmetric up to
+  // round-off, and the exact symmetry is what makes the torque of i's forces vanish.
+  const Mat2 t = body.P[i] * transpose(body.F[i]);
+  const Mat2 tau = 0.5 * (t + transpose(t));
+  return body.V0[i] * (tau * K);
+}
+
 void eulerian_force_on(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
-                       std::size_t i, Vec2& fs, Vec2& fv, double& heat) {
+                       std::span<const Mat2> A, std::size_t i, Vec2& fs, Vec2& fv, double& heat) {
   const NeighbourList& p = body.eulerian.pairs;
   fs = Vec2{};
   fv = Vec2{};
   if (p.start[i] == p.start[i + 1]) return;
   const SolidMaterial& mat = body.material;
   const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
-  const Mat2 Ti = stress_term(body, i);
   const double rho_i = body.rho0[i] / det(body.F[i]);
+  const Mat2& Ai = A[i];
+  const double V0i = body.V0[i];
   for (std::uint32_t k = p.start[i]; k < p.start[i + 1]; ++k) {
     const std::uint32_t j = p.index[k];
     const Vec2 xij = x[i] - x[j];
     const double r = norm(xij);
     if (r == 0.0) continue;
     const Kernel W = pair_kernel(body, i, j);
-    const double dw = W.dw(r);
-    if (dw == 0.0) continue;
-    const Vec2 eh = (1.0 / r) * xij;
-    const double mm = body.m[i] * body.m[j];
-    const Mat2 A = Ti + stress_term(body, j);
-    fs += (mm * dot(eh, A * eh) * dw) * eh;
+    const double dwr = W.dw_over_r(r);
+    if (dwr == 0.0) continue;
+    // i's stress through i's gradient, j's through j's (header): the sum of the two maps is
+    // commutative, so the pair force on j is the exact negative of this one.
+    fs += (dwr * (body.V0[j] * Ai + V0i * A[j])) * xij;
     if (viscous) {
       const Vec2 vij = v[i] - v[j];
       const double rho_mean = 0.5 * (rho_i + body.rho0[j] / det(body.F[j]));
       const double pi =
           monaghan_pi(vij, xij, W.h(), 1.0 / rho_mean, mat.sound_speed, mat.av_alpha, mat.av_beta);
       if (pi == 0.0) continue;
-      const Vec2 f = (-mm * pi * dw) * eh;
+      const Vec2 f = (-body.m[i] * body.m[j] * pi * dwr) * xij;
       fv += f;
       heat += -0.5 * dot(f, vij);
     }
@@ -219,11 +242,19 @@ void add_eulerian_forces(SolidBody& body, std::span<const Vec2> v, const Executo
                          std::span<Vec2> f_stress, std::span<Vec2> f_av, std::span<double> heat) {
   if (!body.eulerian.active) return;
   build_eulerian_pairs(body, body.x);
+  std::vector<Mat2>& A = body.eulerian.stress_map;
+  A.assign(body.size(), Mat2{});
   const SolidBody& b = body;
+  exec.for_each(b.eulerian.members.size(), [&](std::size_t k) {
+    const std::size_t i = b.eulerian.members[k];
+    Mat2 L, K;
+    velocity_gradient(b, b.x, v, i, L, K);
+    A[i] = eulerian_stress_map(b, i, K);
+  });
   exec.for_each(body.size(), [&](std::size_t i) {
     Vec2 fs, fv;
     double q = 0.0;
-    eulerian_force_on(b, b.x, v, i, fs, fv, q);
+    eulerian_force_on(b, b.x, v, A, i, fs, fv, q);
     f_stress[i] += fs;
     f_av[i] += fv;
     heat[i] += q;

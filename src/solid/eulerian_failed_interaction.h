@@ -7,26 +7,35 @@
 // (solid/solid_topology.h, a subset build), so every remaining TL sum is the one of an
 // intact body with a free surface where the switched particles were. Every pair with at
 // least one switched particle is an Eulerian pair over current neighbours (a cell list over
-// the body's current positions, support 2 h_ij with h_ij = (h_i + h_j)/2, the body's kernel):
-//
-//   m_i dv_i/dt += Σ_j m_i m_j [ ê·(T_i/ρ_i² + T_j/ρ_j²)ê − Π_ij ] W'(r) ê,
-//   ê = (x_i − x_j)/r,  T = 2σ − ½ tr σ 1,  σ = sym(P Fᵀ)/J,  ρ = ρ0/J,
-//
-// the usual symmetric SPH stress form m_i m_j (σ_i/ρ_i² + σ_j/ρ_j²)·∇_iW_ij projected on the
-// pair direction, with T chosen so that the projection has the same continuum limit (−∇·σ/ρ
-// on an isotropic neighbourhood: the fourth moment of ê is (δδ + δδ + δδ)/8 in 2D). For an
-// isotropic stress (a failed particle: σ = −max(p, 0) 1) T = σ and the two forms are the same
-// pair by pair. The projection makes every pair force central, so linear and angular
-// momentum are conserved to round-off for any stress (the unprojected form conserves angular
-// momentum only for isotropic stresses). Π_ij is Monaghan's viscosity with the body's α, β
-// and P-wave speed, Π = (−α c μ + β μ²)/ρ̄, μ = h v_ij·x_ij/(r² + 0.01 h²).
+// the body's current positions, support 2 h_ij with h_ij = (h_i + h_j)/2, the body's kernel).
 //
 // A switched particle keeps its law: its deformation gradient is advanced in the current
-// configuration, F ← (1 − ½ h L)⁻¹ (1 + ½ h L) F with the corrected velocity gradient
-// L = [Σ_j V0_j (v_j − v_i) ⊗ ∇W_ij] M⁻¹, M = Σ_j V0_j (x_j − x_i) ⊗ ∇W_ij (exact for a linear
-// velocity field; uncorrected when det M < 0.1, an almost isolated particle), and the law's
-// committing update gives P (a failed Johnson–Cook particle: compression only). ρ = ρ0/det F
-// then integrates the continuity equation on the current neighbours (d ln J/dt = tr L).
+// configuration, F ← (1 − ½ h L)⁻¹ (1 + ½ h L) F, with the corrected velocity gradient
+//
+//   L_i = Σ_j (v_j − v_i) ⊗ g_ij,  g_ij = K_i V0_j ∇_iW_ij,  K_i = M_i⁻ᵀ,
+//   M_i = Σ_j (x_j − x_i) ⊗ V0_j ∇_iW_ij
+//
+// over all its current neighbours (exact for a linear velocity field; K = 1 when
+// det M <= 0.1, an almost isolated particle), and the law's committing update gives P (a
+// failed Johnson–Cook particle: compression only). ρ = ρ0/det F then integrates the
+// continuity equation on the current neighbours (d ln J/dt = tr L).
+//
+// Force (docs/model.md §3 "Eulerian switch", Eq. E1): minus the derivative of the stress
+// power with respect to the velocities. i's stress power is V0_i P_i : Ḟ_i = V0_i τ_i : L_i
+// = Σ_j (v_j − v_i)·A_i V0_j ∇_iW_ij, with the Kirchhoff stress τ = P Fᵀ (= J σ) and the
+// stress map A_i = V0_i τ_i K_i, so f_k = −∂/∂v_k Σ_i V0_i P_i : Ḟ_i is, pair by pair,
+//
+//   f_i += (V0_j A_i + V0_i A_j) ∇_iW_ij,   A = 0 for an intact particle:
+//
+// the corrected SPH form V_i V0_j σ_i K_i ∇_iW_ij + V_j V0_i σ_j K_j ∇_iW_ij (V = V0 J), each
+// particle's Cauchy stress through its own corrected gradient, as the total-Lagrangian pair
+// force takes P B (spec §3, Eq. 10). The pair forces are antisymmetric bit for bit (linear
+// momentum); their torque vanishes where K is the correction (Σ_j (x_j − x_i) ⊗ g_ij = 1
+// and τ symmetric: angular momentum; for K = 1 only for an isotropic τ); and their power is
+// minus the switched particles' stress power, so the energy balance closes. The intact
+// particles' stress acts only through their own (rebuilt, one-sided) total-Lagrangian sums,
+// whose power is their stress power. Π_ij is Monaghan's viscosity with the body's α, β and
+// P-wave speed, Π = (−α c μ + β μ²)/ρ̄, μ = h v_ij·x_ij/(r² + 0.01 h²), accounted in f_av.
 #pragma once
 #include <span>
 
@@ -52,15 +61,19 @@ bool update_eulerian_switch(SolidBody& body, const Executor& exec);
 void build_eulerian_pairs(SolidBody& body, std::span<const Vec2> x);
 
 // For a switched particle i: F_new from body.F[i] over a step h [s] with the current
-// positions x and velocities v, and Ḟ = L (F_old + F_new)/2 for the stress power.
+// positions x and velocities v, Ḟ = L (F_old + F_new)/2 for the stress power, and the
+// correction K of its gradient at x (header comment).
 void eulerian_motion(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
-                     double h, std::size_t i, Mat2& F_new, Mat2& Fdot);
+                     double h, std::size_t i, Mat2& F_new, Mat2& Fdot, Mat2& K);
+
+// The stress map A_i = V0_i sym(P_i F_iᵀ) K_i of a switched particle from body.F and body.P.
+Mat2 eulerian_stress_map(const SolidBody& body, std::size_t i, const Mat2& K);
 
 // The Eulerian pair forces on particle i over body.eulerian.pairs (empty for most intact
-// particles) from body.F and body.P: stress part `fs` and viscous part `fv` [N/m]; adds i's
-// half of each pair's viscous dissipation to `heat` [W/m].
+// particles) with the stress maps A (0 for intact particles): stress part `fs` and viscous
+// part `fv` [N/m]; adds i's half of each pair's viscous dissipation to `heat` [W/m].
 void eulerian_force_on(const SolidBody& body, std::span<const Vec2> x, std::span<const Vec2> v,
-                       std::size_t i, Vec2& fs, Vec2& fv, double& heat);
+                       std::span<const Mat2> A, std::size_t i, Vec2& fs, Vec2& fv, double& heat);
 
 // Adds the Eulerian pair forces of every particle to f_stress and f_av and the heating to heat
 // (builds the pairs at body.x; the standalone operator, for internal_forces).

@@ -22,6 +22,9 @@ struct EulerianState {
   // current positions): for a switched i all particles within 2h, for an intact i the
   // switched ones. Symmetric: j in pairs(i) <=> i in pairs(j).
   NeighbourList pairs;
+  // A_i = V0_i τ_i K_i of every particle (0 for intact ones) at the current sub-step: the map
+  // of i's Kirchhoff stress onto its pair forces (eulerian_failed_interaction.h). Scratch.
+  std::vector<Mat2> stress_map;
   // Scratch of the pair search (not state).
   CellGrid grid;
   std::vector<Vec2> member_x;

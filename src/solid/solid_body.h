@@ -116,12 +116,14 @@ struct SolidBody {
   int last_substeps = 0;   // sub-steps taken by the last advance_body call
 
   // Energy accumulators since setup [J/m].
-  double dissipated = 0.0;      // work removed by artificial viscosity
-  double hourglass_work = 0.0;  // work done against the hourglass control (its potential
-                                // is reported by body_energies; this is a cross-check)
-  double external_work = 0.0;   // work done by gravity and the fluid force (rigid_prescribed:
-                                // the fluid force only; rigid_fixed: none)
-  double clamp_work = 0.0;      // work done on the body by moving clamps (their reactions)
+  double dissipated = 0.0;       // work removed by artificial viscosity
+  double hourglass_work = 0.0;   // work done against the hourglass control (its potential
+                                 // is reported by body_energies; this is a cross-check)
+  double external_work = 0.0;    // work done by gravity and the fluid force (rigid_prescribed:
+                                 // the fluid force only; rigid_fixed: none)
+  double clamp_work = 0.0;       // work done on the body by moving clamps (their reactions)
+  double switch_released = 0.0;  // hourglass potential removed by the Eulerian switch's
+                                 // topology rebuilds (solid/eulerian_failed_interaction.h)
 
   // The per-particle field list (core/field_registry.h). Reference data (X, m, V0, rho0,
   // clamps, layers; the topology) is rebuilt from the case by setup_body, so it is not persistent;
@@ -174,6 +176,7 @@ struct SolidBody {
     f("hourglass_work", s.hourglass_work);
     f("external_work", s.external_work);
     f("clamp_work", s.clamp_work);
+    f("switch_released", s.switch_released);
     f("last_substeps", s.last_substeps);
     f("material_updates", s.history.updates);
     f("deformation_gradient_rebase_failed", s.F_rebase_failed);

@@ -394,3 +394,55 @@ TEST(EulerianSwitch, StressForceIsConjugateToTheRebasedF) {
   ASSERT_GT(rebase, 1e-3);
   EXPECT_LT(std::abs(force_power + stress_power), 1e-10 * scale);
 }
+
+// The Eulerian pair force is minus the derivative of the switched particles' stress power
+// (docs/model.md §3 "Eulerian switch", Eq. E1): for any velocity field its power equals
+// −Σ_switched V0 P : Ḟ with Ḟ = L F, the rate eulerian_motion integrates into F and e. Every
+// particle carries a stress, so a pair force that let an intact particle's stress act in the
+// Eulerian pairs (work reaching no stress power), or dropped the correction K from the force
+// while L keeps it, fails this. The torque of the pair forces vanishes where K corrects.
+TEST(EulerianSwitch, EulerianForceIsConjugateToTheSwitchedStressPower) {
+  const int nx = 24, ny = 10;
+  SolidBody b = bar(nx, ny);
+  std::mt19937 gen(11);
+  const Executor exec(1);
+  perturb_and_switch(b, nx, 12, 0.05, gen, exec);
+  if (HasFatalFailure()) return;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  // A stressed state with symmetric Cauchy stresses: P = J σ F⁻ᵀ.
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const double sxy = 3e7 * u(gen);
+    const Mat2 sigma{1e8 * (1.0 + 0.3 * u(gen)), sxy, sxy, -5e7 * (1.0 + 0.3 * u(gen))};
+    b.P[i] = det(b.F[i]) * (sigma * transpose(inverse(b.F[i])));
+  }
+  const std::size_t n = b.size();
+  std::vector<Vec2> v(n), fs(n), fav(n);
+  std::vector<double> heat(n);
+  for (Vec2& vi : v) vi = Vec2{u(gen), u(gen)};
+  add_eulerian_forces(b, v, exec, fs, fav, heat);
+  double force_power = 0.0, stress_power = 0.0, scale = 0.0, torque = 0.0, tscale = 0.0;
+  double max_k = 0.0, fscale = 0.0;
+  Vec2 fsum;
+  for (std::size_t i = 0; i < n; ++i) {
+    fsum += fs[i];
+    fscale += norm(fs[i]);
+    force_power += dot(fs[i], v[i]);
+    torque += cross(b.x[i], fs[i]);
+    tscale += norm(b.x[i]) * norm(fs[i]);
+    if (!b.eulerian.switched[i]) continue;
+    Mat2 F_new, Fdot, K;
+    eulerian_motion(b, b.x, v, 0.0, i, F_new, Fdot, K);
+    const double sp = b.V0[i] * ddot(b.P[i], Fdot);
+    stress_power += sp;
+    scale += std::abs(sp);
+    const Mat2 d = K - Mat2::identity();
+    max_k = std::max({max_k, std::abs(d.xx), std::abs(d.xy), std::abs(d.yx), std::abs(d.yy)});
+  }
+  std::printf(
+      "max |K - 1| %.3e, force power %.6e W/m, stress power %.6e W/m, torque %.2e of %.2e\n", max_k,
+      force_power, stress_power, torque, tscale);
+  ASSERT_GT(max_k, 1e-2);  // the correction matters here
+  EXPECT_LT(std::abs(force_power + stress_power), 1e-10 * scale);
+  EXPECT_LT(std::abs(torque), 1e-12 * tscale);
+  EXPECT_LT(norm(fsum), 1e-14 * fscale);  // pair forces antisymmetric: Σ f = 0
+}
