@@ -54,9 +54,10 @@ struct CostConstants {
   double dry_contact_ns = 12.0;   // per contact particle per fluid step, no water
   double solid_ns = 100.0;        // per elastic particle per sub-step (SVK), ≤ solid_n_small
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
-  // 60 000-particle ring of bench_solid runs 1.68x slower per particle than the 10 052 one
-  // (BM_RingSubsteps, 1 thread, medians of 3: 200 against 119 ns, docs/validation.md §6).
-  double solid_ns_large = 168.0;
+  // 60 000-particle ring of bench_solid runs 2.05x slower per particle than the 10 052 one
+  // (BM_RingSubsteps, 1 thread, idle, medians of 3: 303 against 148 ns, docs/validation.md
+  // §6).
+  double solid_ns_large = 205.0;
   double solid_call_ns = 8.2;         // per elastic particle per fluid step (sub-step set-up)
   double johnson_cook_factor = 2.56;  // a Johnson–Cook sub-step against an SVK one
   // Two-thread speed-up of the water phases: small at ≤ n_small water particles, large at
