@@ -119,8 +119,6 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     BodyCost& bc = c.bodies[i];
     if (!bc.elastic) continue;
-    const SolidBody& b = sim.bodies()[i];
-    bc.pairs = b.topology.pairs.index.size();
     // As solid/body_dynamics.cpp: ceil(Δt/Δt_s), at least one.
     bc.substeps_per_step =
         std::max(1L, static_cast<long>(std::ceil(dt / bc.stable_step * (1.0 - 1e-12))));

@@ -79,7 +79,6 @@ struct BodyCost {
   double stable_step = 0.0;    // [s] elastic: at the start; rigid: +inf
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
   double law_factor = 1.0;     // sub-step cost of its material law relative to SVK
-  std::size_t pairs = 0;       // elastic: its total-Lagrangian pairs (each pair both ways)
   double seconds = 0.0;        // elastic: predicted CPU seconds on one thread
   double speedup = 1.0;        // elastic: its sub-steps' two-thread speed-up (1: one thread)
 };
