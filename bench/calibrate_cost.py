@@ -9,7 +9,8 @@ constants of the model in src/app/cost_model.h by least squares on the relative 
   water    fluid_rates = steps c_pair(N_water) N_ff (c_pair log-linear in N_water between
            its values at 3 200 and 166 500 water particles: the pair pass leaves the caches);  fluid_integration + step_limit +
            checks_and_zone = steps c_water N_water
-  lists    neighbour_lists = (steps c_lists + rebuilds c_rebuild) (N_water + N_contact)
+  lists    neighbour_lists = rebuilds c_rebuild (N_water + N_contact) (the per-step
+           displacement check is small: a separate per-step term fitted negative)
   contact  contact = steps c_cpair (N_fc + N_cf) with water,
            steps c_dry N_contact without
   solid    solid_substeps = Σ_b N_b (k_law c_sub substeps_b + c_call steps), c_sub and
@@ -164,10 +165,8 @@ def main():
                 1e-9 * r["steps"] * r["wpairs"] * f_size(r["water"])], r["t"]["fluid_rates"])
               for r in wet])
     cw = lsq([([1e-9 * r["steps"] * r["water"]], water_t(r)) for r in wet])
-    # The per-step displacement check is measured with the rebuilds: the two-constant fit
-    # gave the check a small negative cost, so c_lists is 0 and c_rebuild carries the phase.
-    cl = [0.0] + lsq([([1e-9 * r["rebuilds"] * (r["water"] + r["contact"])],
-                       r["t"]["neighbour_lists"]) for r in wet if r["rebuilds"] > 0])
+    cl = lsq([([1e-9 * r["rebuilds"] * (r["water"] + r["contact"])], r["t"]["neighbour_lists"])
+              for r in wet if r["rebuilds"] > 0])
     cc = lsq([([1e-9 * r["steps"] * r["cpairs"]], r["t"]["contact"]) for r in wet])
     cd = lsq([([1e-9 * r["steps"] * r["contact"]], r["t"]["contact"]) for r in dry]) if dry \
         else [0.0]
@@ -184,7 +183,7 @@ def main():
         (r["t"]["solid_substeps"] - cs[1] * solid_x(r, 1.0)[1]) / (cs[0] * solid_x(r, 1.0)[0])
         for r in jc) if jc else 1.75
     print(f"water_pair_ns_small = {cp[0]:.2f}, water_pair_ns_large = {cp[1]:.2f}, water_ns = "
-          f"{cw[0]:.1f}, lists_ns = {cl[0]:.1f}, rebuild_ns = {cl[1]:.1f}, contact_pair_ns = "
+          f"{cw[0]:.1f}, rebuild_ns = {cl[0]:.1f}, contact_pair_ns = "
           f"{cc[0]:.2f}, dry_contact_ns = {cd[0]:.1f}, solid_ns = {cs[0]:.1f}, solid_call_ns = "
           f"{cs[1]:.1f}, johnson_cook_factor = {kjc:.2f}")
     print()
@@ -196,7 +195,7 @@ def main():
         fs = f_size(r["water"]) if r["water"] else 0.0
         mw = st * ((cp[0] * (1 - fs) + cp[1] * fs) * r["wpairs"] + cw[0] * r["water"]) \
             if r["water"] else 0.0
-        ml = (st * cl[0] + 1e-9 * r["rebuilds"] * cl[1]) * (r["water"] + r["contact"]) \
+        ml = 1e-9 * r["rebuilds"] * cl[0] * (r["water"] + r["contact"]) \
             if r["water"] else 0.0
         mc = st * cc[0] * r["cpairs"] if r["water"] else st * cd[0] * r["contact"]
         ms = 0.0

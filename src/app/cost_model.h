@@ -15,11 +15,11 @@
 //
 // Cost, per fluid step (CPU seconds on one thread; the phases of app/phase_times.h):
 //   water   = c_pair(N_water) N_ff + c_water N_water  (GSPH pair pass over the listed pairs,
-//             Verlet skin included; integration, limits, checks). c_pair rises log-linearly
-//             in N_water between its values at 3 200 and 166 500 particles: the pass leaves
-//             the caches (11 ns per pair at 3 200, 28 ns at 166 500 measured)
-//   lists   = c_lists (N_water + N_contact)            (the per-step displacement check)
-//           + c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
+//             Verlet skin included; integration, limits, checks). c_pair is log-linear in
+//             N_water between its values at 3 200 and 166 500 particles (fitted 11.8 and
+//             20.6 ns under load, 16.3 and 19.0 ns in an idle repeat: a rise with size, by
+//             how much the measurements do not settle — docs/validation.md §6)
+//   lists   = c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
 //             steps (rebuilt when a particle has moved half the skin s 2 h_c,
 //             coupling/interaction_lists.h; v the predicted speed)
 //   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads)
@@ -48,7 +48,6 @@ struct CostConstants {
   double water_pair_ns_large = 20.6;  // ≤ water_n_small / ≥ water_n_large water particles
   double water_n_small = 3200, water_n_large = 166500;
   double water_ns = 21.4;         // per water particle per fluid step
-  double lists_ns = 0.0;          // per water or contact particle per fluid step
   double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
   double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
   double dry_contact_ns = 12.0;   // per contact particle per fluid step, no water

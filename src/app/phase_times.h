@@ -2,7 +2,7 @@
 // steady clock around each operator group of FsiStepper::step(), summed over the steps this
 // process took. summary.json writes them as "time_split_s" (with the rest of the wall time,
 // output and set-up, as "other"); the cost model (app/cost_model.h) is calibrated from them
-// (bench/calibrate_cost.sh).
+// (bench/calibrate_cost.py).
 //
 // A handful of clock reads per fluid step (~25 ns each) against steps of 0.1 ms to 1 s:
 // the timing does not measurably change what it times.
@@ -24,6 +24,8 @@ struct PhaseTimes {
     return step_limit + fluid_integration + solid_substeps + neighbour_lists + fluid_rates +
            contact + checks_and_zone;
   }
+  // The rest of a wall time `wall` (set-up, output, progress): summary.json's "other".
+  double other(double wall) const { return wall - total(); }
   // f(name, seconds) for each phase, in the order above.
   template <class F>
   void visit(F&& f) const {

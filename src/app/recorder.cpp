@@ -432,7 +432,7 @@ void Recorder::write_summary(const RunStatus& status) const {
     JsonObject split;
     const PhaseTimes& t = st_.phase_times();
     t.visit([&](const char* name, double s) { split.set(name, s); });
-    split.set("other", status.wall_seconds - t.total());  // set-up, output, progress
+    split.set("other", t.other(status.wall_seconds));
     summary.set("time_split_s", split);
     summary.set("cpu_seconds", status.cpu_seconds);
   }

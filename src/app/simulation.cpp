@@ -190,7 +190,7 @@ int Simulation::run() {
     // Where the time went (app/phase_times.h), largest first.
     std::vector<std::pair<double, const char*>> split;
     stepper_->phase_times().visit([&](const char* n, double s) { split.emplace_back(s, n); });
-    split.emplace_back(w - stepper_->phase_times().total(), "other");
+    split.emplace_back(stepper_->phase_times().other(w), "other");
     std::sort(split.begin(), split.end(),
               [](const auto& a, const auto& b) { return a.first > b.first; });
     std::string line = "time split:";
