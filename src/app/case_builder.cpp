@@ -156,6 +156,7 @@ BuiltCase build_case(const CaseConfig& cfg) {
   p.end_time = num.end_time;
   p.dual_time_stepping = num.dual_time_stepping;
   p.fluid_force_correction = num.fluid_force_correction;
+  p.fluid_integrator = num.fluid_integrator;
   p.domain = num.domain;
   p.limiter_omega = cfg.fluid.limiter_omega;
   p.viscosity = cfg.fluid.viscosity;

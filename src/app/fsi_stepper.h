@@ -7,6 +7,9 @@
 //   v_n+1 = v+ + dt/2 a_n+1,  rho_n+1 = rho+ + dt/2 drho_n+1.
 // Bodies advance over the same [t_n, t_n+1] with the fluid force of the last evaluation
 // held constant and are then corrected for the new force (app/dual_time_stepping.h).
+// numerics.fluid_integrator = "symplectic" (fluid/fluid_integrator_kind.h; fixed walls only)
+// instead splits the density around a velocity step, with a momentum pass at mid-step and a
+// continuity pass at the new velocity (step_symplectic in the .cpp, docs/model.md §5).
 //
 // One rate evaluation runs these operators in this order (each needs the previous):
 //   1. gather_body_state         bodies → contact set (x, v, a, volume, normal)
@@ -35,6 +38,7 @@
 #include "coupling/substep_average.h"
 #include "coupling/wall_acceleration_kind.h"
 #include "fluid/absorbing_zone.h"
+#include "fluid/fluid_integrator_kind.h"
 #include "fluid/fluid_particles.h"
 #include "fluid/tait_eos.h"
 #include "solid/solid_body.h"
@@ -49,6 +53,8 @@ struct FsiParams {
   double cfl = 0.25;               // fluid acoustic CFL [-]
   double acceleration_cfl = 0.25;  // acceleration bound factor, 0: off [-] (time_step_limit.h)
   double dt_floor = 1e-9;          // a step below this is divergence [s]
+  // Kick-drift-kick or the symplectic split (fluid/fluid_integrator_kind.h, docs/model.md §5).
+  FluidIntegrator fluid_integrator = FluidIntegrator::KickDriftKick;
   double end_time = 0.0;           // [s] (only for the step of a case where nothing moves)
   bool dual_time_stepping = true;  // sub-cycle bodies inside a fluid step (spec §6)
   // How sub-cycled elastic bodies receive dt/2 (F_n+1 - F_n) (coupling/fluid_force_correction.h).
@@ -138,7 +144,10 @@ class FsiStepper {
   void restore_loads(std::vector<BodyLoad> loads) { loads_ = std::move(loads); }
 
  private:
-  void evaluate_rates(PhaseClock& clock, PhaseTimes& t);
+  // `pass` (fluid_integrator_kind.h): Continuity leaves the bodies' fluid force and loads as
+  // the last momentum pass set them; Momentum leaves the leak flags.
+  void evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both);
+  void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
   void check_state() const;
   // Every body particle finite and inside the domain at `time`; else DivergenceError.
   void check_bodies(double time) const;

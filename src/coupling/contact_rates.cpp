@@ -15,7 +15,9 @@ ContactPairInput pair_input(const FluidParticles& f, std::size_t i, const Contac
 
 template <bool kViscous>
 void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
-              const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+              const Kernel& kernel, const ContactParams& prm, const Executor& exec, RatePass pass) {
+  const bool momentum = pass != RatePass::Continuity;
+  const bool continuity = pass != RatePass::Momentum;
   exec.for_each(f.size(), [&](std::size_t i) {
     const std::uint32_t b = fc.start[i], e = fc.start[i + 1];
     if (b == e) return;
@@ -31,8 +33,8 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
       force += r.force + r.force_viscous;
       drho += r.drho_term;
     }
-    f.a[i] += force / f.m[i];
-    f.drho[i] += 2.0 * f.rho[i] * drho;
+    if (momentum) f.a[i] += force / f.m[i];
+    if (continuity) f.drho[i] += 2.0 * f.rho[i] * drho;
   });
 }
 
@@ -61,11 +63,12 @@ void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList&
 }  // namespace
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
-                          const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+                          const Kernel& kernel, const ContactParams& prm, const Executor& exec,
+                          RatePass pass) {
   if (prm.viscosity > 0.0)
-    to_fluid<true>(f, c, fc, kernel, prm, exec);
+    to_fluid<true>(f, c, fc, kernel, prm, exec, pass);
   else
-    to_fluid<false>(f, c, fc, kernel, prm, exec);
+    to_fluid<false>(f, c, fc, kernel, prm, exec, pass);
 }
 
 void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,

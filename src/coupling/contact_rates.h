@@ -3,11 +3,14 @@
 //    force, viscous force and continuity term (solid velocity through v*).
 //  - compute_contact_reaction: each solid particle sums minus the same pair forces.
 // Both call contact_pair() with identical arguments, so sum of the two is zero to round-off.
+// `pass` (fluid_integrator_kind.h): Momentum adds only the forces to a, Continuity only the
+// density term to drho; the reaction belongs to the momentum sums (call it with those).
 #pragma once
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/parallel.h"
 #include "coupling/contact_particles.h"
+#include "fluid/fluid_integrator_kind.h"
 #include "fluid/fluid_particles.h"
 
 namespace slamsph {
@@ -25,7 +28,8 @@ struct ContactParams {
 };
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
-                          const Kernel& kernel, const ContactParams& prm, const Executor& exec);
+                          const Kernel& kernel, const ContactParams& prm, const Executor& exec,
+                          RatePass pass = RatePass::Both);
 
 void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
                               const Kernel& kernel, const ContactParams& prm, const Executor& exec);

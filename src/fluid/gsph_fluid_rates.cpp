@@ -12,7 +12,7 @@ namespace {
 // The hot loop of the solver. solve_riemann() is written out with its divisions hoisted
 // (tests/unit/test_fluid_momentum.cpp checks it against the plain formulas through the
 // conservation and uniform-state tests; riemann_solver.h is the reference).
-template <bool kViscous, KernelType kType>
+template <bool kViscous, KernelType kType, RatePass kPass>
 void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel_in,
                 const GsphParams& prm, const Executor& exec) {
   const Kernel kernel = kernel_in;  // a local copy keeps its constants in registers
@@ -27,10 +27,12 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
   const double* p = f.p.data();
   Vec2* acc = f.a.data();
   double* drho = f.drho.data();  // holds sum_j V_j (v_i - v*) . grad W until the last pass
+  constexpr bool kMomentum = kPass != RatePass::Continuity;
+  constexpr bool kContinuity = kPass != RatePass::Momentum;
   exec.for_each(f.size(), [&](std::size_t i) {
     f.volume[i] = f.m[i] / f.rho[i];
-    acc[i] = Vec2{};
-    drho[i] = 0.0;
+    if constexpr (kMomentum) acc[i] = Vec2{};
+    if constexpr (kContinuity) drho[i] = 0.0;
   });
   const double* V = f.volume.data();
   const NeighbourList& half = pairs.half;
@@ -60,15 +62,19 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
         const double ps = (rhoj * pi + rhoi * p[j] + beta * rhoi * rhoj * du) * inv_sum;
         // (v_i - v*) . grad_i W = (U_L - U*) e . (dwr dx) = -(U_L - U*) dwr r, and for j
         // (v_j - v*) . grad_j W = -(U* - U_R) dwr r.
-        const double dwr_r = dwr * r;
-        drho_i -= Vj * (uL - us) * dwr_r;
-        drho[j] -= Vi * (us - uR) * dwr_r;
+        if constexpr (kContinuity) {
+          const double dwr_r = dwr * r;
+          drho_i -= Vj * (uL - us) * dwr_r;
+          drho[j] -= Vi * (us - uR) * dwr_r;
+        }
         // Pressure forces -2 V_j p* / rho_i grad_i W and its mirror on j (equal and opposite
         // momentum, m_i V_j / rho_i = V_i V_j = m_j V_i / rho_j).
-        const double fp = -2.0 * ps * dwr;
-        acc_i += (Vj * inv_rhoi * fp) * dx;
-        acc[j] -= (Vi * inv_rhoj * fp) * dx;
-        if constexpr (kViscous) {
+        if constexpr (kMomentum) {
+          const double fp = -2.0 * ps * dwr;
+          acc_i += (Vj * inv_rhoi * fp) * dx;
+          acc[j] -= (Vi * inv_rhoj * fp) * dx;
+        }
+        if constexpr (kViscous && kMomentum) {
           // Morris et al. 1997: sum m_j (mu_i + mu_j)/(rho_i rho_j) (r.gradW)/(r^2+eta^2) v_ij
           const double coef = prm.viscosity * (rhoi + rhoj) * dwr * r2 / (r2 + eta2);
           const Vec2 vij = vi - v[j];
@@ -76,33 +82,46 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
           acc[j] -= (coef * Vi * inv_rhoj) * vij;
         }
       }
-      acc[i] += acc_i;
-      drho[i] += drho_i;
+      if constexpr (kMomentum) acc[i] += acc_i;
+      if constexpr (kContinuity) drho[i] += drho_i;
     }
   });
   exec.for_each(f.size(), [&](std::size_t i) {
-    drho[i] *= 2.0 * rho[i];
-    acc[i] += g;
+    if constexpr (kContinuity) drho[i] *= 2.0 * rho[i];
+    if constexpr (kMomentum) acc[i] += g;
   });
 }
 
-template <bool kViscous>
+template <bool kViscous, RatePass kPass>
 void dispatch_kernel(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
                      const GsphParams& prm, const Executor& exec) {
   if (kernel.type() == KernelType::WendlandC2)
-    rates_impl<kViscous, KernelType::WendlandC2>(f, ff, kernel, prm, exec);
+    rates_impl<kViscous, KernelType::WendlandC2, kPass>(f, ff, kernel, prm, exec);
   else
-    rates_impl<kViscous, KernelType::CubicSpline>(f, ff, kernel, prm, exec);
+    rates_impl<kViscous, KernelType::CubicSpline, kPass>(f, ff, kernel, prm, exec);
+}
+
+template <RatePass kPass>
+void dispatch_viscous(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
+                      const GsphParams& prm, const Executor& exec) {
+  if (prm.viscosity > 0.0)
+    dispatch_kernel<true, kPass>(f, ff, kernel, prm, exec);
+  else
+    dispatch_kernel<false, kPass>(f, ff, kernel, prm, exec);
 }
 
 }  // namespace
 
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
-                              const GsphParams& prm, const Executor& exec) {
-  if (prm.viscosity > 0.0)
-    dispatch_kernel<true>(f, ff, kernel, prm, exec);
-  else
-    dispatch_kernel<false>(f, ff, kernel, prm, exec);
+                              const GsphParams& prm, const Executor& exec, RatePass pass) {
+  switch (pass) {
+    case RatePass::Both:
+      return dispatch_viscous<RatePass::Both>(f, ff, kernel, prm, exec);
+    case RatePass::Momentum:
+      return dispatch_viscous<RatePass::Momentum>(f, ff, kernel, prm, exec);
+    case RatePass::Continuity:
+      return dispatch_viscous<RatePass::Continuity>(f, ff, kernel, prm, exec);
+  }
 }
 
 }  // namespace slamsph

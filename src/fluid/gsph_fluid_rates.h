@@ -3,13 +3,16 @@
 //   dv_i/dt   = -2 sum_j m_j p*/(rho_i rho_j) grad_i W_ij + g  (+ Morris viscosity)
 // Only v* . e_ij = U* enters the continuity term, because (v_i - v*) is contracted with
 // grad_i W_ij, which is parallel to e_ij. The pass overwrites `a` and `drho`; contact
-// terms (coupling/) are added afterwards. Each pair is evaluated once (core/cell_grid.h,
-// BandedPairs) and applied to both particles; the bands make that race-free and keep the
-// summation order, hence the results, independent of the thread count.
+// terms (coupling/) are added afterwards. `pass` selects the sums (fluid_integrator_kind.h): the
+// symplectic step computes the momentum and the continuity sums at different states; each
+// of those passes writes only its own array (and zeroes it first). Each pair is evaluated once
+// (core/cell_grid.h, BandedPairs) and applied to both particles; the bands make that race-free and
+// keep the summation order, hence the results, independent of the thread count.
 #pragma once
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/parallel.h"
+#include "fluid/fluid_integrator_kind.h"
 #include "fluid/fluid_particles.h"
 
 namespace slamsph {
@@ -23,6 +26,7 @@ struct GsphParams {
 };
 
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,
-                              const GsphParams& prm, const Executor& exec);
+                              const GsphParams& prm, const Executor& exec,
+                              RatePass pass = RatePass::Both);
 
 }  // namespace slamsph

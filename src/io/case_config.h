@@ -13,6 +13,7 @@
 #include "core/vec.h"
 #include "coupling/force_correction_kind.h"
 #include "coupling/wall_acceleration_kind.h"
+#include "fluid/fluid_integrator_kind.h"
 #include "geometry/shape.h"
 #include "solid/materials/material_law.h"
 
@@ -35,7 +36,9 @@ struct NumericsConfig {
   // How sub-cycled elastic bodies get dt/2 (F_n+1 - F_n) (coupling/fluid_force_correction.h).
   FluidForceCorrection fluid_force_correction = FluidForceCorrection::Kick;
   double dt_floor = 1e-9;  // a step below this is divergence [s]
-  Box domain;              // a particle leaving this box is divergence [m] (required)
+  // Fluid time integrator (fluid/fluid_integrator_kind.h, docs/model.md §5).
+  FluidIntegrator fluid_integrator = FluidIntegrator::KickDriftKick;
+  Box domain;  // a particle leaving this box is divergence [m] (required)
 };
 
 struct FluidBlockConfig {

@@ -93,6 +93,9 @@ std::string resolved_case_toml(const CaseConfig& c) {
          : n.fluid_force_correction == FluidForceCorrection::NextStep ? "next_step"
                                                                       : "kick")
     << "\n";
+  o << "fluid_integrator = "
+    << q(n.fluid_integrator == FluidIntegrator::Symplectic ? "symplectic" : "kick_drift_kick")
+    << "\n";
   o << "dt_floor = " << d(n.dt_floor) << "  # [s]\n\n";
   o << "[numerics.domain]\n";
   box(o, n.domain);

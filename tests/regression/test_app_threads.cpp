@@ -107,6 +107,16 @@ TEST(AppThreads, DamBreakBitIdenticalFor1And2Threads) {
   run_and_compare(cfg, 150, 25);
 }
 
+// The symplectic fluid step (numerics.fluid_integrator): its two passes per step keep the
+// gather order of the standard one.
+TEST(AppThreads, SymplecticDamBreakBitIdenticalFor1And2Threads) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/dam_break.toml");
+  cfg.numerics.dx = 0.02;
+  cfg.numerics.cfl = 0.5;
+  cfg.numerics.fluid_integrator = FluidIntegrator::Symplectic;
+  run_and_compare(cfg, 80, 20);
+}
+
 TEST(AppThreads, ElasticCylinderEntryBitIdenticalFor1And2Threads) {
   CaseConfig cfg =
       load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/elastic_cylinder_entry.toml");
