@@ -10,6 +10,7 @@
 #include "coupling/virtual_pressure.h"
 #include "coupling/wall_acceleration.h"
 #include "fluid/gsph_fluid_rates.h"
+#include "solid/body_dynamics.h"
 
 namespace slamsph {
 
@@ -158,9 +159,16 @@ void FsiStepper::step() {
 // drho_n+1 is also the first half step of the next step. For the acoustic pair rho <-> v this
 // is a leapfrog (each half of the pair advanced with the other's newest value), amplification
 // 1 up to omega dt = 2, where the kick-drift-kick step's predictor grows at every step size.
-// The bodies are fixed walls (the parser rejects every other kind with this integrator): they
-// take the momentum pass's force over the whole step, dt F_n+1/2, exactly what the water
-// gave up, so the momentum balance closes without a correction.
+// The bodies are fixed walls or follow a prescribed motion (the parser rejects the kinds the
+// fluid force moves): a prescribed body is moved to t_n+1/2 for the momentum pass and on to
+// t_n+1 for the continuity pass, so each pass sees the water and the body at the same time.
+// Their supports take the momentum pass's force over the whole step, dt F_n+1/2, exactly
+// what the water gave up: the momentum balance closes without a correction.
+void FsiStepper::advance_prescribed(double t, double dt) {
+  for (SolidBody& b : sys_.bodies)
+    if (b.kind == BodyKind::RigidPrescribed) advance_body(b, t, dt, prm_.gravity, exec_);
+}
+
 void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& f = sys_.fluid;
   const TaitEos& eos = sys_.eos;
@@ -171,14 +179,19 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
     f.x[i] += hdt * f.v[i];
   });
   clock.lap(t.fluid_integration);
+  advance_prescribed(time_, hdt);
+  clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Momentum);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dt * loads_[b].total;
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.v[i] += dt * f.a[i];
     f.x[i] += hdt * f.v[i];
   });
-  time_ += dt;
   clock.lap(t.fluid_integration);
+  advance_prescribed(time_ + hdt, hdt);
+  time_ += dt;
+  check_bodies(time_);
+  clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Continuity);
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.rho[i] += hdt * f.drho[i];

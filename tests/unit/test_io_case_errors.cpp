@@ -462,8 +462,8 @@ TEST(IoCaseErrors, PolygonFaceFillRefusedForElasticBodies) {
 }
 
 // numerics.fluid_integrator (docs/case_format.md): one of the two names; the symplectic step
-// only with fixed walls, the error naming the moving body's kind (it has no scheme for the held
-// force of a moving body yet, docs/model.md §5) rather than running it wrong.
+// only with fixed and prescribed bodies, the error naming the free body's kind (it has no scheme
+// for the held force of a moving body yet, docs/model.md §5) rather than running it wrong.
 TEST(IoCaseErrors, FluidIntegratorIsChecked) {
   const std::string at = "end_time = 1.0";
   const std::string bad = replace_line(kBase, at, at + "\nfluid_integrator = \"leapfrog\"");
@@ -472,7 +472,7 @@ TEST(IoCaseErrors, FluidIntegratorIsChecked) {
   const std::string sym = replace_line(kBase, at, at + "\nfluid_integrator = \"symplectic\"");
   // body[1] (the elastic disc) has no kind line: the error names its table's line.
   expect_error(sym, line_of(sym, "[[body]]", 2), "body[1].kind",
-               "numerics.fluid_integrator = \"symplectic\" handles only fixed walls");
+               "numerics.fluid_integrator = \"symplectic\" handles only fixed and prescribed");
   const std::string rigid =
       replace_line(sym, "name = \"cyl\"", "name = \"cyl\"\nkind = \"rigid_free\"\nmass = 10.0");
   expect_error(rigid, line_of(rigid, "kind = \"rigid_free\""), "body[1].kind", "'rigid_free'");
