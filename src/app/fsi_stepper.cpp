@@ -10,7 +10,6 @@
 #include "coupling/virtual_pressure.h"
 #include "coupling/wall_acceleration.h"
 #include "fluid/gsph_fluid_rates.h"
-#include "solid/body_dynamics.h"
 
 namespace slamsph {
 
@@ -159,14 +158,24 @@ void FsiStepper::step() {
 // drho_n+1 is also the first half step of the next step. For the acoustic pair rho <-> v this
 // is a leapfrog (each half of the pair advanced with the other's newest value), amplification
 // 1 up to omega dt = 2, where the kick-drift-kick step's predictor grows at every step size.
-// The bodies are fixed walls or follow a prescribed motion (the parser rejects the kinds the
-// fluid force moves): a prescribed body is moved to t_n+1/2 for the momentum pass and on to
-// t_n+1 for the continuity pass, so each pass sees the water and the body at the same time.
-// Their supports take the momentum pass's force over the whole step, dt F_n+1/2, exactly
-// what the water gave up: the momentum balance closes without a correction.
-void FsiStepper::advance_prescribed(double t, double dt) {
-  for (SolidBody& b : sys_.bodies)
-    if (b.kind == BodyKind::RigidPrescribed) advance_body(b, t, dt, prm_.gravity, exec_);
+// The bodies take the step in two halves around the momentum pass (app/dual_time_stepping.h):
+// over [t_n, t_n+1/2] holding the force F_n-1/2 of the last momentum pass, then the
+// correction dt/2 (F_n+1/2 - F_n-1/2) (the kick, or what numerics.fluid_force_correction
+// says), then over [t_n+1/2, t_n+1] holding F_n+1/2. Each body so receives dt F_n+1/2 over
+// the step, exactly what the water gave up (the momentum balance closes); for a body without
+// sub-steps it is a velocity step with the mid-step force. Each pass sees the water and the
+// bodies at the same time: the momentum pass at t_n+1/2 (the sub-step averages of that half),
+// the continuity pass at t_n+1.
+void FsiStepper::advance_bodies_half(double t, double hdt) {
+  const std::size_t nf = sys_.fluid.size();
+  const bool average = prm_.substep_average && !dual_.bodies_share_step(nf);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
+  solid_substeps_ +=
+      dual_.advance(sys_.bodies, t, hdt, prm_.gravity, !dual_.bodies_share_step(nf), exec_);
+  check_bodies(t + hdt);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], hdt);
 }
 
 void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
@@ -179,18 +188,20 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
     f.x[i] += hdt * f.v[i];
   });
   clock.lap(t.fluid_integration);
-  advance_prescribed(time_, hdt);
+  advance_bodies_half(time_, hdt);
   clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Momentum);
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dt * loads_[b].total;
+  dual_.correct(sys_.bodies, dt);  // dt/2 (F_n+1/2 - F_n-1/2): the first half's correction
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
+  clock.lap(t.solid_substeps);
   exec_.for_each(f.size(), [&](std::size_t i) {
     f.v[i] += dt * f.a[i];
     f.x[i] += hdt * f.v[i];
   });
   clock.lap(t.fluid_integration);
-  advance_prescribed(time_ + hdt, hdt);
+  advance_bodies_half(time_ + hdt, hdt);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   time_ += dt;
-  check_bodies(time_);
   clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Continuity);
   exec_.for_each(f.size(), [&](std::size_t i) {

@@ -7,8 +7,7 @@
 //   v_n+1 = v+ + dt/2 a_n+1,  rho_n+1 = rho+ + dt/2 drho_n+1.
 // Bodies advance over the same [t_n, t_n+1] with the fluid force of the last evaluation
 // held constant and are then corrected for the new force (app/dual_time_stepping.h).
-// numerics.fluid_integrator = "symplectic" (fluid/fluid_integrator_kind.h; fixed and
-// prescribed bodies only)
+// numerics.fluid_integrator = "symplectic" (fluid/fluid_integrator_kind.h)
 // instead splits the density around a velocity step, with a momentum pass at mid-step and a
 // continuity pass at the new velocity (step_symplectic in the .cpp, docs/model.md §5).
 //
@@ -149,8 +148,9 @@ class FsiStepper {
   // the last momentum pass set them; Momentum leaves the leak flags.
   void evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both);
   void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
-  // Moves the rigid_prescribed bodies over [t, t + dt] (the symplectic step's half steps).
-  void advance_prescribed(double t, double dt);
+  // Advances every body over [t, t + hdt] holding its fluid force (a half of the symplectic
+  // step), with the sub-step averages of that half.
+  void advance_bodies_half(double t, double hdt);
   void check_state() const;
   // Every body particle finite and inside the domain at `time`; else DivergenceError.
   void check_bodies(double time) const;

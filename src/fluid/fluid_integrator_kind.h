@@ -8,8 +8,8 @@ namespace slamsph {
 //                  stable to an acoustic CFL of about 0.35, docs/validation.md §6);
 //   Symplectic     position Verlet with the density split around the velocity step
 //                  (Zhang, Hu & Adams 2017; SPHinXsys): a momentum pass at mid-step and a
-//                  continuity pass at the new velocity, stable to CFL ~0.7; fixed and
-//                  prescribed bodies only (the parser rejects elastic and rigid_free ones).
+//                  continuity pass at the new velocity, stable to CFL ~0.7; the bodies
+//                  advance in two halves around the momentum pass.
 enum class FluidIntegrator { KickDriftKick, Symplectic };
 
 // Which of the two rate sums a pass computes (fluid/gsph_fluid_rates.h, coupling/contact_rates.h).

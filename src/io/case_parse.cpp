@@ -949,18 +949,6 @@ CaseConfig parse_root(const toml::table& tbl, const std::string& source) {
            "body '" + b.name + "' (bounds " + box_text(bb) + ") lies outside the domain",
            "a shape inside numerics.domain " + box_text(c.numerics.domain));
     }
-    // The symplectic step has no scheme yet for a body the fluid force moves (the held force
-    // of its sub-steps, the end-of-step correction; docs/model.md §5): refuse rather than run
-    // it wrong.
-    if (c.numerics.fluid_integrator == FluidIntegrator::Symplectic && b.kind != "rigid_fixed" &&
-        b.kind != "rigid_prescribed")
-      br.bad("kind",
-             "numerics.fluid_integrator = \"symplectic\" handles only fixed and prescribed "
-             "bodies so far, not a body of kind '" +
-                 b.kind + "'",
-             "kind = \"rigid_fixed\" or \"rigid_prescribed\", or numerics.fluid_integrator = "
-             "\"kick_drift_kick\"",
-             "\"" + b.kind + "\"");
     c.bodies.push_back(std::move(b));
   }
 

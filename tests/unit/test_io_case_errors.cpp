@@ -461,25 +461,15 @@ TEST(IoCaseErrors, PolygonFaceFillRefusedForElasticBodies) {
   EXPECT_EQ(parse_case_string(none, "x").bodies[1].shape.fill, PolygonFill::Cartesian);
 }
 
-// numerics.fluid_integrator (docs/case_format.md): one of the two names; the symplectic step
-// only with fixed and prescribed bodies, the error naming the free body's kind (it has no scheme
-// for the held force of a moving body yet, docs/model.md §5) rather than running it wrong.
+// numerics.fluid_integrator (docs/case_format.md): one of the two names, kick-drift-kick by
+// default; the symplectic step takes every body kind (here an elastic disc in a fixed tank).
 TEST(IoCaseErrors, FluidIntegratorIsChecked) {
   const std::string at = "end_time = 1.0";
   const std::string bad = replace_line(kBase, at, at + "\nfluid_integrator = \"leapfrog\"");
   expect_error(bad, line_of(bad, "fluid_integrator"), "numerics.fluid_integrator",
                "one of 'kick_drift_kick', 'symplectic'");
   const std::string sym = replace_line(kBase, at, at + "\nfluid_integrator = \"symplectic\"");
-  // body[1] (the elastic disc) has no kind line: the error names its table's line.
-  expect_error(sym, line_of(sym, "[[body]]", 2), "body[1].kind",
-               "numerics.fluid_integrator = \"symplectic\" handles only fixed and prescribed");
-  const std::string rigid =
-      replace_line(sym, "name = \"cyl\"", "name = \"cyl\"\nkind = \"rigid_free\"\nmass = 10.0");
-  expect_error(rigid, line_of(rigid, "kind = \"rigid_free\""), "body[1].kind", "'rigid_free'");
-  // Fixed walls only: accepted, and kick-drift-kick stays the default.
-  const std::string walls = sym.substr(0, sym.find("[[body]]\nname = \"cyl\""));
-  EXPECT_EQ(parse_case_string(walls, "x").numerics.fluid_integrator, FluidIntegrator::Symplectic);
-  EXPECT_EQ(parse_case_string(kBase.substr(0, kBase.find("[[body]]\nname = \"cyl\"")), "x")
-                .numerics.fluid_integrator,
+  EXPECT_EQ(parse_case_string(sym, "x").numerics.fluid_integrator, FluidIntegrator::Symplectic);
+  EXPECT_EQ(parse_case_string(kBase, "x").numerics.fluid_integrator,
             FluidIntegrator::KickDriftKick);
 }
