@@ -97,18 +97,21 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   const double steps = static_cast<double>(c.fluid_steps);
   const double nw = static_cast<double>(c.fluid_particles);
   const double nc = static_cast<double>(c.contact_particles);
+  const bool symplectic = num.fluid_integrator == FluidIntegrator::Symplectic;
+  const double pass_factor = symplectic ? k.symplectic_step_factor : 1.0;
   if (c.fluid_particles > 0) {
     const double pair_ns = log_interpolate(nw, k.water_n_small, k.water_n_large,
                                            k.water_pair_ns_small, k.water_pair_ns_large);
-    c.fluid_seconds =
-        1e-9 * steps * (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
+    c.fluid_seconds = 1e-9 * steps * pass_factor *
+                      (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
     const FsiStepper& st = sim.stepper();
     const double per_rebuild =
         v * dt > 0.0 ? st.params().neighbour_skin * st.system().kernel_c.h() / (v * dt)
                      : std::numeric_limits<double>::infinity();
     c.rebuilds = static_cast<long>(std::ceil(steps / std::max(1.0, per_rebuild)));
     c.lists_seconds = 1e-9 * static_cast<double>(c.rebuilds) * k.rebuild_ns * (nw + nc);
-    c.contact_seconds = 1e-9 * steps * k.contact_pair_ns * static_cast<double>(c.contact_pairs);
+    c.contact_seconds =
+        1e-9 * steps * pass_factor * k.contact_pair_ns * static_cast<double>(c.contact_pairs);
   } else {
     c.contact_seconds = 1e-9 * steps * k.dry_contact_ns * nc;
   }
@@ -118,16 +121,20 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     BodyCost& bc = c.bodies[i];
     if (!bc.elastic) continue;
-    // As solid/body_dynamics.cpp: ceil(Δt/Δt_s), at least one.
+    // As solid/body_dynamics.cpp: ceil(Δt/Δt_s), at least one, per call (two calls of Δt/2
+    // with the symplectic step, app/fsi_stepper.cpp).
+    const double calls = symplectic ? 2.0 : 1.0;
     bc.substeps_per_step =
-        std::max(1L, static_cast<long>(std::ceil(dt / bc.stable_step * (1.0 - 1e-12))));
+        static_cast<long>(calls) *
+        std::max(1L, static_cast<long>(std::ceil(dt / calls / bc.stable_step * (1.0 - 1e-12))));
     const long total = bc.substeps_per_step * c.fluid_steps;
     c.solid_substeps += total;
     const double n = static_cast<double>(bc.particles);
     const double sub_ns =
         log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_ns, k.solid_ns_large);
     bc.seconds =
-        1e-9 * n * (sub_ns * bc.law_factor * static_cast<double>(total) + k.solid_call_ns * steps);
+        1e-9 * n *
+        (sub_ns * bc.law_factor * static_cast<double>(total) + k.solid_call_ns * calls * steps);
     c.solid_seconds += bc.seconds;
     // The team the sub-steps run on (solid/elastic_substep.cpp).
     bc.speedup = two.threads_for(bc.particles, kSubstepParticlesPerThread) > 1
