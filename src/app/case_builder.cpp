@@ -118,6 +118,7 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   s.clamp_boxes = bc.clamp.boxes;
   s.clamp_velocities = bc.clamp.velocities;
   s.clamp_layers = bc.clamp.layers;
+  s.pre_failed_boxes = bc.pre_failed;
   for (const MotionPoint& p : bc.motion) s.motion.push_back({p.t, p.v});
   s.mass = bc.mass;
   s.inertia = bc.inertia;
