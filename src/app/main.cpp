@@ -107,7 +107,12 @@ int run_or_check(const std::string& cmd, Request& req) {
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
     const int threads = opt.threads > 0 ? opt.threads : Executor::default_threads();
-    std::printf(")\n%s", describe_cost(predict_cost(sim), threads).c_str());
+    // The constants scaled to this machine (two short probe runs, app/cost_model.h).
+    const MachineFactors f = measure_machine_factors();
+    std::printf(
+        ")\nmachine: costs x%.2g (water) and x%.2g (solid) of the calibration runs' "
+        "(measured on two built-in probe runs)\n%s",
+        f.fluid, f.solid, describe_cost(predict_cost(sim, scaled({}, f)), threads).c_str());
     return 0;
   }
   opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
