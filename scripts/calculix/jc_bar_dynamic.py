@@ -29,7 +29,10 @@ the reference converged. CPE8R elements must not be used here: their elastic wav
 not a CI test. Session of issue 11's verification (docs/validation.md §5b): with the same
 ccx 50 x 5 result, slamsph dx 0.5 / 0.25 mm gives the displacement within 1.5 / 1.3 % and
 the plastic-strain integral along the bar -2.7 / -1.4 %, but the slice at 25-35 mm on the
-plastic front stays ~10 % low at every dx; ccx 100 x 10 could not be run (CPU).
+plastic front stays ~10 % low at every dx against ccx 50 x 5. Session 10: against ccx 100 x 10
+(1 mm elements; the front slice of ccx fell 9.6 % from 50 x 5) slamsph dx 0.25 mm is within
+-3.1 ... +1.7 % in the slices 5-50 mm (-7.2 % at 50-70 mm), the displacement within 1.4 %;
+docs/validation.md §5b has the table.
 
 usage: scripts/calculix/jc_bar_dynamic.py SLAMSPH_BINARY WORKDIR [--quick] [--ccx-only] [--rerun]
 Environment: JC_T (end time, default 30e-6 s), JC_N (ccx steps = output times, default 10),

@@ -61,6 +61,15 @@ SolidBody build_body(const CaseConfig& cfg, std::size_t index) {
   body.a.assign(lat.x.size(), Vec2{});
   body.f_fluid.assign(lat.x.size(), Vec2{});
   body.clamped.assign(lat.x.size(), 0);
+  if (!bc.pre_failed.empty()) {
+    bool any = false;
+    for (const Vec2& X : body.X)
+      for (const Box& b : bc.pre_failed) any = any || inside(b, X);
+    if (!any)
+      throw InputError(cfg.where("body[" + std::to_string(index) + "].pre_failed") +
+                       ": no particle of the body lies inside its boxes; expected boxes around "
+                       "particles of the body, in reference coordinates (m)");
+  }
   try {
     setup_body(body, setup);
   } catch (const InputError& e) {
@@ -118,6 +127,7 @@ BodySetup body_setup_from_case(const CaseConfig& cfg, std::size_t index) {
   s.clamp_boxes = bc.clamp.boxes;
   s.clamp_velocities = bc.clamp.velocities;
   s.clamp_layers = bc.clamp.layers;
+  s.pre_failed_boxes = bc.pre_failed;
   for (const MotionPoint& p : bc.motion) s.motion.push_back({p.t, p.v});
   s.mass = bc.mass;
   s.inertia = bc.inertia;

@@ -218,7 +218,6 @@ RecorderResume read_checkpoint(const std::string& path, const CaseConfig& cfg, F
     stepper.restore_loads(std::move(loads));
     get_fields(r, "fluid", sys.fluid);
     resize_fields(sys.fluid, sys.fluid.x.size());
-    get_fields(r, "contact", sys.contact);
     for (std::size_t b = 0; b < sys.bodies.size(); ++b) {
       const std::string sec = "body/" + std::to_string(b);
       if (r.get_text(sec, "name") != sys.bodies[b].name)
@@ -230,6 +229,11 @@ RecorderResume read_checkpoint(const std::string& path, const CaseConfig& cfg, F
       // now, before anything (the energy row of the resume time) reads the topology.
       if (sys.bodies[b].is_elastic()) update_eulerian_switch(sys.bodies[b], exec);
     }
+    // The ghosts around failed particles, and with them the contact set's size, are a
+    // function of the restored flags too (coupling/failure_zone_ghosts.h).
+    if (replan_around_failures(sys.layout, sys.bodies))
+      init_contact_particles(sys.contact, sys.layout);
+    get_fields(r, "contact", sys.contact);
     stepper.lists().restore(r.get<Vec2>("lists", "fluid_reference"),
                             r.get<Vec2>("lists", "contact_reference"),
                             r.get_value<long>("lists", "rebuilds"), exec);

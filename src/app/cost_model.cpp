@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <limits>
 
 #include "app/simulation.h"
 #include "core/parallel.h"
+#include "io/case_file.h"
 #include "solid/body_dynamics.h"
 #include "solid/elastic_substep.h"
 #include "solid/materials/johnson_cook.h"
@@ -142,6 +144,93 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
                                        k.solid_speedup_large)
                      : 1.0;
   }
+  return c;
+}
+
+namespace {
+
+// The built-in probe runs of measure_machine_factors: CPU seconds of `steps` fluid steps on
+// one thread (the fastest of three) and their prediction.
+std::pair<double, double> probe(const std::string& text, long steps, const CostConstants& k) {
+  double best = std::numeric_limits<double>::infinity(), predicted = 0.0;
+  for (int r = 0; r < 3; ++r) {
+    Simulation sim(parse_case_string(text, "cost_probe.toml"), silent_options(1));
+    const CostPrediction p = predict_cost(sim, k);
+    predicted = p.cpu_seconds() * static_cast<double>(steps) /
+                static_cast<double>(std::max(1L, p.fluid_steps));
+    const std::clock_t c0 = std::clock();
+    for (long s = 0; s < steps; ++s) sim.step();
+    best = std::min(best, static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+  }
+  return {best, predicted};
+}
+
+}  // namespace
+
+MachineFactors measure_machine_factors(const CostConstants& k) {
+  const std::string water = R"(
+schema_version = 1
+name = "cost_probe_water"
+[numerics]
+dx = 0.01
+end_time = 1.0
+gravity = [0.0, -9.81]
+[numerics.domain]
+min = [-0.1, -0.1]
+max = [0.9, 0.6]
+[fluid]
+sound_speed = 20.0
+[[fluid.block]]
+min = [0.0, 0.0]
+max = [0.8, 0.4]
+[[body]]
+name = "tank"
+kind = "rigid_fixed"
+density = 1000.0
+[body.shape]
+type = "tank"
+min = [0.0, 0.0]
+max = [0.8, 0.5]
+layers = 4
+)";
+  const std::string plate = R"(
+schema_version = 1
+name = "cost_probe_plate"
+[numerics]
+dx = 0.002
+end_time = 1.0
+gravity = [0.0, 0.0]
+[numerics.domain]
+min = [-0.1, -0.1]
+max = [0.3, 0.1]
+[materials.plate]
+density = 1000.0
+youngs_modulus = 2.0e6
+poisson_ratio = 0.3975
+[[body]]
+name = "plate"
+material = "plate"
+gravity = false
+velocity = [0.0, 0.01]
+[body.shape]
+type = "rectangle"
+min = [0.0, 0.0]
+max = [0.2, 0.04]
+)";
+  const auto [wt, wp] = probe(water, 40, k);
+  const auto [st, sp] = probe(plate, 60, k);
+  MachineFactors f;
+  if (wp > 0.0 && wt > 0.0) f.fluid = wt / wp;
+  if (sp > 0.0 && st > 0.0) f.solid = st / sp;
+  return f;
+}
+
+CostConstants scaled(const CostConstants& k, const MachineFactors& f) {
+  CostConstants c = k;
+  for (double* x : {&c.water_pair_ns_small, &c.water_pair_ns_large, &c.water_ns, &c.rebuild_ns,
+                    &c.contact_pair_ns, &c.dry_contact_ns})
+    *x *= f.fluid;
+  for (double* x : {&c.solid_ns, &c.solid_ns_large, &c.solid_call_ns}) *x *= f.solid;
   return c;
 }
 

@@ -112,6 +112,21 @@ struct CostPrediction {
 // The prediction for `sim` as constructed (time 0) to its end time.
 CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 
+// This machine against the one the constants were measured on: the CPU time of two short
+// built-in runs on one thread (a 3 200-particle water block in a tank, 40 fluid steps; a
+// 2 000-particle SVK plate without water, 60 steps), each the fastest of three, divided by
+// what `k` predicts for them. A CPU of another speed, or one whose sibling hardware thread
+// is busy, changes all costs alike to first order; `slamsph check` scales the constants by
+// these factors (about 0.3 s). Measured: 1 on the calibration runs' machine by
+// construction of the fit; 0.4–0.6 on the same machine kind when it is idle (docs/validation.md
+// §6 "Cost model").
+struct MachineFactors {
+  double fluid = 1.0;  // water, neighbour lists, contact
+  double solid = 1.0;  // sub-steps
+};
+MachineFactors measure_machine_factors(const CostConstants& k = {});
+CostConstants scaled(const CostConstants& k, const MachineFactors& f);
+
 // Several lines for `slamsph check`; the wall time for 1 and for `threads` threads.
 std::string describe_cost(const CostPrediction& c, int threads);
 

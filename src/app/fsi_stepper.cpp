@@ -33,13 +33,17 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
 void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass) {
   FluidParticles& fluid = sys_.fluid;
   ContactParticles& contact = sys_.contact;
+  // A failed set that grew re-plans the ghosts around it (coupling/failure_zone_ghosts.h):
+  // the contact set changes size, so the fluid–contact lists are rebuilt.
+  const bool replanned = replan_around_failures(sys_.layout, sys_.bodies);
+  if (replanned) init_contact_particles(contact, sys_.layout);
   gather_body_state(contact, sys_.layout, sys_.bodies);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     apply_substep_average(contact, sys_.layout, b, averages_[b]);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     apply_wall_acceleration(contact, sys_.layout, b, sys_.bodies[b], prm_.wall_acceleration);
   clock.lap(t.contact);
-  lists_->update(fluid, contact, exec_);
+  lists_->update(fluid, contact, exec_, replanned);
   clock.lap(t.neighbour_lists);
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};

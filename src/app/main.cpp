@@ -44,6 +44,7 @@ struct Request {
   std::string plot_body;
   bool no_output = false;
   bool overwrite = false;
+  bool no_machine_probe = false;  // check: the calibration machine's costs, unscaled
 };
 
 // "--threads" default text for the help: where the number comes from and its value now.
@@ -107,7 +108,16 @@ int run_or_check(const std::string& cmd, Request& req) {
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
     const int threads = opt.threads > 0 ? opt.threads : Executor::default_threads();
-    std::printf(")\n%s", describe_cost(predict_cost(sim), threads).c_str());
+    // The constants scaled to this machine (two short probe runs, app/cost_model.h).
+    const MachineFactors f = req.no_machine_probe ? MachineFactors{} : measure_machine_factors();
+    if (req.no_machine_probe)
+      std::printf(")\nmachine: not probed (--no-machine-probe): the calibration runs' costs\n");
+    else
+      std::printf(
+          ")\nmachine: costs x%.2g (water) and x%.2g (solid) of the calibration runs' "
+          "(measured on two built-in probe runs)\n",
+          f.fluid, f.solid);
+    std::printf("%s", describe_cost(predict_cost(sim, scaled({}, f)), threads).c_str());
     return 0;
   }
   opt.out_dir = req.out_dir.empty() ? "results/" + cfg.name : req.out_dir;
@@ -206,6 +216,9 @@ int dispatch(int argc, char** argv) {
                        thread_default_text() + ")")
       ->check(CLI::Range(1, Executor::kMaxThreads))
       ->type_name("N");
+  check->add_flag("--no-machine-probe", req.no_machine_probe,
+                  "Predict with the calibration machine's per-particle costs, without the two "
+                  "short probe runs (~0.2 s) that scale them to this machine");
 
   CLI::App* resume = app.add_subcommand(
       "resume",

@@ -84,6 +84,8 @@ std::vector<std::string> ProbeSet::headers() const {
       h.push_back(n + " [Pa]");
     } else if (pc.kind == "max_speed") {
       h.push_back(n + " [m/s]");
+    } else if (pc.kind == "fluid_volume") {
+      h.push_back(n + " [m^2]");
     } else if (pc.kind == "body_displacement") {
       h.insert(h.end(), {n + "_x [m]", n + "_y [m]"});
     } else if (pc.kind == "body_strain") {
@@ -133,6 +135,11 @@ std::vector<double> ProbeSet::row(const FsiStepper& st, const Executor& exec) co
       // Largest fluid particle speed: spurious currents in water meant to be at rest.
       row.push_back(std::sqrt(exec.max_of(
           fluid.size(), [&](std::size_t i) { return norm2(fluid.v[i]); }, 0.0)));
+    } else if (pc.kind == "fluid_volume") {
+      // Water inside the box (per unit depth): e.g. what came through a breach.
+      row.push_back(exec.sum_of<double>(fluid.size(), [&](std::size_t i) {
+        return inside(pc.box, fluid.x[i]) ? fluid.m[i] / fluid.rho[i] : 0.0;
+      }));
     } else if (body && body->size() == 0) {
       row.insert(row.end(), headers_of_kind(pc.kind), 0.0);
     } else if (pc.kind == "body_pressure") {

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <span>
 
+#include "coupling/failure_zone_ghosts.h"
 #include "coupling/surface_normals.h"
+#include "solid/eulerian_failed_interaction.h"
 
 namespace slamsph {
 
@@ -25,11 +27,58 @@ ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
   l.ref_normals = std::move(ref_normals);
   l.offset.assign(bodies.size() + 1, 0);
   for (std::size_t b = 0; b < bodies.size(); ++b) l.offset[b + 1] = l.offset[b] + bodies[b].size();
+  l.support = support;
+  l.ghost_spacing = 0.5 * fluid_dx;
   for (std::size_t b = 0; b < bodies.size(); ++b)
     for (const GhostSpec& g : plan_ghost_layers(
-             bodies[b].X, l.ref_normals[b], particle_spacing(bodies[b]), support, 0.5 * fluid_dx))
+             bodies[b].X, l.ref_normals[b], particle_spacing(bodies[b]), support, l.ghost_spacing))
       l.ghosts.push_back({static_cast<std::uint32_t>(b), g});
+  l.reference_ghosts = l.ghosts;
+  l.planned_failed.assign(bodies.size(), 0);
+  l.has_slots.assign(bodies.size(), 0);
   return l;
+}
+
+bool replan_around_failures(ContactLayout& l, const std::vector<SolidBody>& bodies) {
+  bool changed = false;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const std::vector<double>* failed = bodies[b].is_elastic() ? failed_flags(bodies[b]) : nullptr;
+    std::size_t count = 0;
+    if (failed != nullptr)
+      for (double f : *failed) count += f > 0.5 ? 1 : 0;
+    if (count != l.planned_failed[b]) changed = true;
+    l.planned_failed[b] = count;
+  }
+  if (!changed) return false;
+  // Per body: the reference ghosts of particles outside the failure zone, then the slots of
+  // the intact zone particles (in particle order), so the layout is a function of the flags.
+  std::vector<ContactGhost> ghosts;
+  std::size_t r = 0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const SolidBody& body = bodies[b];
+    const std::vector<std::uint8_t> zone =
+        l.planned_failed[b] > 0 ? failure_zone(body) : std::vector<std::uint8_t>{};
+    for (; r < l.reference_ghosts.size() && l.reference_ghosts[r].body == b; ++r)
+      if (zone.empty() || !zone[l.reference_ghosts[r].spec.parent])
+        ghosts.push_back(l.reference_ghosts[r]);
+    l.has_slots[b] = 0;
+    if (zone.empty()) continue;
+    const std::vector<double>& failed = *failed_flags(body);
+    const std::vector<double> spacing = particle_spacing(body);
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      if (!zone[i] || failed[i] > 0.5) continue;
+      const int slots = ghost_depths(spacing[i], l.support, l.ghost_spacing).slots();
+      for (int j = 0; j < slots; ++j) {
+        ContactGhost g{static_cast<std::uint32_t>(b), GhostSpec{}, j};
+        g.spec.parent = static_cast<std::uint32_t>(i);
+        g.spec.weight = 0.0;
+        ghosts.push_back(g);
+      }
+      l.has_slots[b] = 1;
+    }
+  }
+  l.ghosts = std::move(ghosts);
+  return true;
 }
 
 void init_contact_particles(ContactParticles& contact, const ContactLayout& layout) {
@@ -50,6 +99,7 @@ void init_contact_particles(ContactParticles& contact, const ContactLayout& layo
 
 void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
                        const std::vector<SolidBody>& bodies) {
+  std::vector<std::vector<int>> present(bodies.size());  // layers behind slot parents
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const SolidBody& body = bodies[b];
     const std::size_t o = layout.offset[b];
@@ -70,10 +120,19 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
         n = n / norm(n);
       }
       contact.normal[o + i] = n;
+      contact.debris[o + i] = 0;
     }
-    // Faces opened by a crack: normals from the current configuration near failed particles.
-    if (body.kind == BodyKind::Elastic)
-      update_normals_near_failure(body, std::span<Vec2>(contact.normal).subspan(o, body.size()));
+    if (body.kind != BodyKind::Elastic) continue;
+    // Faces opened by a crack: normals from the current configuration near failed particles,
+    // and the layers behind the slots' parents counted there (coupling/failure_zone_ghosts.h).
+    const std::vector<std::uint8_t> zone = failure_zone(body);
+    if (zone.empty()) continue;
+    const std::span<Vec2> normals = std::span<Vec2>(contact.normal).subspan(o, body.size());
+    update_normals_near_failure(body, zone, normals);
+    const std::vector<double>& failed = *failed_flags(body);
+    for (std::size_t i = 0; i < body.size(); ++i) contact.debris[o + i] = failed[i] > 0.5;
+    if (layout.has_slots.size() > b && layout.has_slots[b])
+      present[b] = layers_behind_now(body, normals, zone, layout.support);
   }
   // Ghosts follow their parent along its current normal (coupling/ghost_layers.h).
   for (std::size_t g = 0; g < layout.ghosts.size(); ++g) {
@@ -84,11 +143,19 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
     const Vec2 n = contact.normal[parent];
     contact.anchor[c] = contact.x[parent];
     const double d = body.spacing.empty() ? body.dx : body.spacing[gh.spec.parent];
-    contact.x[c] = contact.x[parent] - (gh.spec.depth * d) * n;
+    double depth = gh.spec.depth, weight = gh.spec.weight;
+    if (gh.slot >= 0) {
+      const GhostDepths gd = ghost_depths(d, layout.support, layout.ghost_spacing);
+      const int behind = present[gh.body][gh.spec.parent];
+      depth = gd.depth(behind, gh.slot);
+      weight = norm2(n) > 0.0 ? gd.weight(behind, gh.slot) : 0.0;
+    }
+    contact.x[c] = contact.x[parent] - (depth * d) * n;
     contact.v[c] = contact.v[parent];
     contact.a[c] = contact.a[parent];
-    contact.volume[c] = gh.spec.weight * contact.volume[parent];
+    contact.volume[c] = weight * contact.volume[parent];
     contact.normal[c] = n;
+    contact.debris[c] = 0;
   }
 }
 

@@ -28,6 +28,10 @@ struct ContactParticles {
   // particles on its parent's side, dot(x_f - anchor, normal) > 0; anchor = parent position.
   std::vector<std::uint8_t> ghost;
   std::vector<Vec2> anchor;
+  // 1 for a failed particle of an elastic body: it still pushes on the water (compression
+  // only) but is debris, not a wall, so the leak counter does not judge by it
+  // (coupling/failure_zone_ghosts.h). Set at each gather.
+  std::vector<std::uint8_t> debris;
 
   std::size_t size() const { return x.size(); }
   // Whether fluid particle at xf may interact with contact particle s.
@@ -54,6 +58,7 @@ struct ContactParticles {
     f(FieldSpec{"local", "-", false, false}, s.local);
     f(FieldSpec{"ghost", "-", false, false}, s.ghost);
     f(FieldSpec{"anchor", "m", true, false}, s.anchor);
+    f(FieldSpec{"debris", "-", false, false}, s.debris);
   }
   void resize(std::size_t n) { resize_fields(*this, n); }
 };

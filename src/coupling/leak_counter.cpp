@@ -14,7 +14,8 @@ long update_leak_flags(FluidParticles& f, const ContactParticles& c, const Neigh
     bool any = false;
     for (std::uint32_t k = fc.start[i]; k < fc.start[i + 1]; ++k) {
       const std::uint32_t s = fc.index[k];
-      if (c.ghost[s]) continue;  // ghosts lie behind surfaces by construction
+      // Ghosts lie behind surfaces by construction; failed particles are debris, not a wall.
+      if (c.ghost[s] || c.debris[s]) continue;
       const double d2 = norm2(f.x[i] - c.x[s]);
       if (d2 < best) {
         best = d2;

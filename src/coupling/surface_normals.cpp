@@ -4,7 +4,6 @@
 
 #include "core/cell_grid.h"
 #include "core/parallel.h"
-#include "solid/eulerian_failed_interaction.h"
 #include "solid/solid_body.h"
 
 namespace slamsph {
@@ -32,27 +31,15 @@ std::vector<Vec2> reference_surface_normals(const std::vector<Vec2>& X,
   return n;
 }
 
-void update_normals_near_failure(const SolidBody& body, std::span<Vec2> normals) {
-  const std::vector<double>* failed = failed_flags(body);
-  if (failed == nullptr || body.F.size() != body.size()) return;
-  // Failed particles by reference position: the zone is a reference-configuration set, so
-  // it depends only on the (checkpointed) failed flags, also after the crack has opened.
-  std::vector<Vec2> Xf;
-  for (std::size_t i = 0; i < body.size(); ++i)
-    if ((*failed)[i] > 0.5) Xf.push_back(body.X[i]);
-  if (Xf.empty()) return;
+void update_normals_near_failure(const SolidBody& body, std::span<const std::uint8_t> zone,
+                                 std::span<Vec2> normals) {
+  if (zone.empty()) return;
   const Kernel& kernel = body.kernel;
   const double r = kernel.support();
-  const double zone = 2.0 * r;  // the switched particles and the current neighbours they had
-  CellGrid near_failed, all;
-  near_failed.build(Xf, zone);
+  CellGrid all;
   all.build(body.x, r);
   for (std::size_t i = 0; i < body.size(); ++i) {
-    const Vec2 Xi = body.X[i];
-    bool near = false;
-    near_failed.for_each_candidate(
-        Xi, [&](std::uint32_t k) { near = near || norm2(Xf[k] - Xi) < zone * zone; });
-    if (!near) continue;
+    if (!zone[i]) continue;
     const Vec2 xi = body.x[i];
     Vec2 g;
     all.for_each_candidate(xi, [&](std::uint32_t j) {

@@ -3,6 +3,7 @@
 // function, n_s ∝ -sum_j V_j grad_s W_sj, in the reference configuration; it is zero
 // inside the body where the colour gradient vanishes (|sum| h below a threshold).
 #pragma once
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -17,12 +18,13 @@ std::vector<Vec2> reference_surface_normals(const std::vector<Vec2>& X,
 struct SolidBody;
 
 // New surfaces of a cracked elastic body (spec §5; docs/model.md §4 "Leak counter"): every
-// particle whose reference position lies within two kernel supports of a failed particle's
-// (the failed and switched particles and their neighbours) gets the colour-gradient normal of
-// the current configuration, n ∝ −Σ_j V_j ∇W_ij over the body's
-// particles at their current positions x with their current volumes V0 det F, written into
-// normals[i] (zero inside, the same threshold as the reference normals). Others are left as
-// they are. No-op for a body none of whose particles has failed.
-void update_normals_near_failure(const SolidBody& body, std::span<Vec2> normals);
+// particle of the failure zone (zone[i] = 1: its reference position lies within two kernel
+// supports of a failed particle's, coupling/failure_zone_ghosts.h) gets the colour-gradient
+// normal of the current configuration, n ∝ −Σ_j V_j ∇W_ij over the body's particles at their
+// current positions x with their current volumes V0 det F, written into normals[i] (zero
+// inside, the same threshold as the reference normals). Others are left as they are. No-op
+// for an empty zone (no particle of the body has failed).
+void update_normals_near_failure(const SolidBody& body, std::span<const std::uint8_t> zone,
+                                 std::span<Vec2> normals);
 
 }  // namespace slamsph

@@ -126,6 +126,10 @@ struct BodyConfig {
   std::string failed_particles = "lagrangian";
   double mode_vf = 0.0;
   ClampConfig clamp;
+  // Particles inside any of these boxes (reference coordinates) start failed: a pre-cut
+  // crack or breach (`[body.pre_failed] box = {...}` or `boxes = [...]`; a Johnson–Cook
+  // material only, docs/case_format.md).
+  std::vector<Box> pre_failed;
   std::vector<MotionPoint> motion;  // rigid_prescribed: velocity table (linear in t)
   std::optional<double> mass;       // rigid_free: [kg/m] (default density × area)
   std::optional<double> inertia;    // rigid_free: [kg m^2/m] (default from particles)
@@ -137,6 +141,7 @@ struct ProbeConfig {
   std::string name;
   // "pressure" (kernel-weighted at position), "surge_front" (largest fluid x),
   // "water_height" (at x), "max_speed" (largest fluid particle speed),
+  // "fluid_volume" (water volume m/rho inside box, e.g. what entered a breached hull),
   // "body_pressure" (attached to body surface near position),
   // "body_displacement" (displacement of the body particle nearest position);
   // structural (app/probes.h): "body_strain", "body_stress" (at position),
@@ -147,6 +152,7 @@ struct ProbeConfig {
   Vec2 to;  // shortening, midspan_deflection: second end [m]
   Vec2 at;  // midspan_deflection: the point whose deflection is measured [m]
   double x = 0.0;
+  Box box;  // fluid_volume: the region [m]
   std::string body;
 };
 

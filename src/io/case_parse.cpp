@@ -45,9 +45,9 @@ const std::vector<std::string> kPolygonFills{"faces", "cartesian"};
 const std::vector<std::string> kShapes{"rectangle", "disc", "ring", "polygon", "tank", "fuselage"};
 const std::vector<std::string> kSections{"I", "L"};
 const std::vector<std::string> kProbeKinds{
-    "pressure",          "surge_front", "water_height",      "max_speed",       "body_pressure",
-    "body_displacement", "body_strain", "body_stress",       "body_max_strain", "keel_deflection",
-    "ovalisation",       "shortening",  "midspan_deflection"};
+    "pressure",          "surge_front", "water_height",       "max_speed",       "body_pressure",
+    "body_displacement", "body_strain", "body_stress",        "body_max_strain", "keel_deflection",
+    "ovalisation",       "shortening",  "midspan_deflection", "fluid_volume"};
 const std::vector<std::string> kPlots{"",      "cylinder_entry", "dam_break",
                                       "plate", "gate",           "structure"};
 const std::vector<std::string> kProfiles{"", "cantilever_mode"};
@@ -607,7 +607,8 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
                                 "h_over_dx", "spacing_ratio", "velocity", "angular_velocity",
                                 "gravity",   "shape"};
   if (b.kind == "elastic")
-    keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp", "failed_particles"});
+    keys.insert(keys.end(), {"scheme", "initial_profile", "mode_vf", "clamp", "failed_particles",
+                             "pre_failed"});
   else
     keys.push_back("density");
   if (b.kind == "rigid_prescribed") keys.push_back("motion");
@@ -734,6 +735,27 @@ BodyConfig parse_body(const Reader& r, const CaseConfig& c,
       }
     }
   }
+  if (auto pf = r.table("pre_failed", "a [body.pre_failed] table with box or boxes")) {
+    pf->allow({"box", "boxes"});
+    if (!std::holds_alternative<JohnsonCookModel>(mat->model))
+      r.bad("pre_failed", "only a material that can fail can start failed",
+            "a body of a johnson_cook material", "material '" + mat->name + "'");
+    const std::string list = "an array of inline tables [{min = [x, y], max = [x, y]}, ...]";
+    if (auto bx = pf->table("box", "an inline table {min = [x, y], max = [x, y]}")) {
+      bx->allow({"min", "max"});
+      b.pre_failed.push_back(read_box(*bx));
+      if (pf->has("boxes"))
+        pf->bad("boxes", "give either box (one region) or boxes (a list), not both",
+                "boxes = [{min = [x, y], max = [x, y]}, ...] alone");
+    }
+    const std::vector<Reader> bxs = pf->table_array("boxes", list);
+    if (pf->has("boxes") && bxs.empty()) pf->bad("boxes", "empty list", list);
+    for (const Reader& bx : bxs) {
+      bx.allow({"min", "max"});
+      b.pre_failed.push_back(read_box(bx));
+    }
+    if (b.pre_failed.empty()) pf->missing("box", "a box {min = [x, y], max = [x, y]} or boxes");
+  }
   if (b.initial_profile == "cantilever_mode" && b.clamp.boxes.size() != 1)
     r.bad("initial_profile", "cantilever_mode needs exactly one clamped end",
           "a [body.clamp] table with box = {min, max}",
@@ -850,6 +872,7 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
     if (pc.kind == "pressure") p.allow({"name", "kind", "position"}, ctx);
     if (pc.kind == "surge_front" || pc.kind == "max_speed") p.allow({"name", "kind"}, ctx);
     if (pc.kind == "water_height") p.allow({"name", "kind", "x"}, ctx);
+    if (pc.kind == "fluid_volume") p.allow({"name", "kind", "box"}, ctx);
     if (at_point) p.allow({"name", "kind", "body", "position"}, ctx);
     if (whole_body) p.allow({"name", "kind", "body"}, ctx);
     if (pc.kind == "shortening") p.allow({"name", "kind", "body", "position", "to"}, ctx);
@@ -888,6 +911,12 @@ OutputConfig parse_output(const Reader& root, const CaseConfig& c) {
       const Box& d = c.numerics.domain;
       p.check(pc.x >= d.min.x && pc.x <= d.max.x, "x", "outside the domain",
               "an x in [" + pretty(d.min.x) + ", " + pretty(d.max.x) + "]", pc.x);
+    }
+    if (pc.kind == "fluid_volume") {
+      const auto bx = p.table("box", "an inline table {min = [x, y], max = [x, y]}");
+      if (!bx) p.missing("box", "the region {min = [x, y], max = [x, y]} in m");
+      bx->allow({"min", "max"});
+      pc.box = read_box(*bx);
     }
     if (on_body) {
       const auto body = p.string("body", "the name of a [[body]]");

@@ -276,6 +276,14 @@ std::string resolved_case_toml(const CaseConfig& c) {
         o << "]\n";
       }
     }
+    if (!bd.pre_failed.empty()) {
+      o << "\n[body.pre_failed]\n";
+      o << "boxes = [";
+      for (std::size_t i = 0; i < bd.pre_failed.size(); ++i)
+        o << (i ? ", " : "") << "{min = " << v2(bd.pre_failed[i].min)
+          << ", max = " << v2(bd.pre_failed[i].max) << "}";
+      o << "]  # [m], reference coordinates\n";
+    }
   }
 
   const OutputConfig& out = c.output;
@@ -308,6 +316,8 @@ std::string resolved_case_toml(const CaseConfig& c) {
     if (two_points) o << "to = " << v2(p.to) << "  # [m]\n";
     if (p.kind == "midspan_deflection") o << "at = " << v2(p.at) << "  # [m]\n";
     if (p.kind == "water_height") o << "x = " << d(p.x) << "  # [m]\n";
+    if (p.kind == "fluid_volume")
+      o << "box = {min = " << v2(p.box.min) << ", max = " << v2(p.box.max) << "}  # [m]\n";
     if (!p.body.empty()) o << "body = " << q(p.body) << "\n";
   }
   return o.str();

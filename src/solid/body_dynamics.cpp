@@ -265,6 +265,29 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
   body.P.assign(n, Mat2{});
   body.e.assign(n, 0.0);
   body.history.reset(history_fields(sm.law), n, initial_history(sm.law));
+  if (!cfg.pre_failed_boxes.empty()) {
+    // A pre-cut breach: failed (and fully damaged) before the first update, so the first
+    // committed stress is already the failed one (compression only).
+    std::vector<double>*failed = nullptr, *damage = nullptr;
+    for (std::size_t k = 0; k < body.history.fields.size(); ++k) {
+      if (body.history.fields[k].name == "failed") failed = &body.history.values[k];
+      if (body.history.fields[k].name == "damage") damage = &body.history.values[k];
+    }
+    if (failed == nullptr)
+      throw InputError("body '" + cfg.name + "': material '" + mat.name +
+                       "' cannot fail, so no particle can start failed (pre_failed)");
+    std::vector<double>& flag = *failed;
+    std::size_t marked = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (const Box& b : cfg.pre_failed_boxes)
+        if (inside(b, body.X[i]) && flag[i] < 0.5) {
+          flag[i] = 1.0;
+          if (damage != nullptr) (*damage)[i] = 1.0;
+          ++marked;
+        }
+    if (marked == 0)
+      throw InputError("body '" + cfg.name + "': no particle lies inside the pre_failed boxes");
+  }
   // The initial state (F from x = X, i.e. I to round-off) is the first committed update;
   // afterwards the law is evaluated once per sub-step by advance_elastic.
   ForceScratch s;

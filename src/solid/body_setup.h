@@ -50,6 +50,9 @@ struct BodySetup {
   std::vector<Box> clamp_boxes;        // particles inside any box are held fixed
   std::vector<Vec2> clamp_velocities;  // per box, the grip velocity (empty or 0: fixed) [m/s]
   std::vector<int> clamp_layers;       // ring layers held fixed (0 = innermost)
+  // Particles inside any box start failed (a pre-cut breach; a law with a `failed` history
+  // field, solid/eulerian_failed_interaction.h).
+  std::vector<Box> pre_failed_boxes;
   std::optional<CantileverModeInput> cantilever_mode;  // elastic only
   std::vector<PrescribedVelocity> motion;              // rigid_prescribed velocity table
   std::optional<double> mass;                          // rigid_free [kg/m]

@@ -1,5 +1,6 @@
 // Restart tier (issue 8, item 6): for the elastic cylinder entry, the elastic gate, the
-// dam break at reduced resolution and the Johnson–Cook bar (failure.csv, damage history),
+// dam break at reduced resolution, the Johnson–Cook bar (failure.csv, damage history) and
+// the breached plate (ghosts re-planned around failed particles),
 // a run to T and a run to T/2 continued by
 // `slamsph resume --end-time T` leave byte-identical output folders (summary.json compared
 // without its wall-time fields and thread count; the checkpoints themselves aside) —
@@ -57,6 +58,12 @@ const RestartCase kCases[] = {
     // state (docs/model.md §3); the half point falls after several rebuilds.
     {"johnson_cook_bar", "0.001", 8e-5, "1e-5", "_eulerian",
      " --set 'body[0].failed_particles=\"eulerian\"'"},
+    // Water through a pre-failed slot: the ghosts around the failure (and with them the size of
+    // the contact set and the fluid–contact lists) are re-planned from the restored flags
+    // (coupling/failure_zone_ghosts.h); the half point falls after the water entered the slot.
+    {"breached_plate", "0.002", 0.024, "0.004", "",
+     " --set materials.al.youngs_modulus=0.73e9 --set materials.al.eos_sound_speed=532.8"
+     " --set 'output.snapshots=[0.01]'"},
 };
 
 std::string read_file(const fs::path& p) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "app/case_builder.h"
+#include "core/box.h"
 #include "core/error.h"
 #include "io/case_file.h"
 
@@ -94,4 +95,33 @@ TEST(CaseBuilder, ElasticBodiesAreStoredAlongTheStructure) {
   distance /= static_cast<double>(index.size());
   EXPECT_LT(distance, 50.0);
   EXPECT_LT(static_cast<double>(crossing), 0.02 * static_cast<double>(n));
+}
+
+// `[body.pre_failed]` (cases/breached_plate.toml): the particles inside start failed and fully
+// damaged; a box around no particle is an error naming the file and the key.
+TEST(CaseBuilder, PreFailedBoxesMarkTheirParticlesFailed) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/johnson_cook_bar.toml");
+  cfg.bodies.at(0).pre_failed = {Box{{0.05, -0.01}, {0.052, 0.01}}};
+  const SolidBody body = build_case(cfg).system.bodies.at(0);
+  int failed = 0, damaged = 0, inside_box = 0;
+  for (std::size_t k = 0; k < body.history.fields.size(); ++k)
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      const bool in = inside(cfg.bodies[0].pre_failed[0], body.X[i]);
+      if (body.history.fields[k].name == "failed") {
+        failed += body.history.values[k][i] > 0.5;
+        inside_box += in;
+        EXPECT_EQ(body.history.values[k][i] > 0.5, in) << i;
+      }
+      if (body.history.fields[k].name == "damage") damaged += body.history.values[k][i] >= 1.0;
+    }
+  EXPECT_EQ(failed, 20);  // two columns of 10 particles at dx 1 mm
+  EXPECT_EQ(damaged, failed);
+  EXPECT_EQ(inside_box, failed);
+  cfg.bodies[0].pre_failed = {Box{{0.2, 0.2}, {0.21, 0.21}}};
+  try {
+    build_case(cfg);
+    FAIL() << "an empty pre_failed box was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("body[0].pre_failed"), std::string::npos) << e.what();
+  }
 }

@@ -461,6 +461,22 @@ TEST(IoCaseErrors, PolygonFaceFillRefusedForElasticBodies) {
   EXPECT_EQ(parse_case_string(none, "x").bodies[1].shape.fill, PolygonFill::Cartesian);
 }
 
+TEST(IoCaseErrors, PreFailedNeedsAMaterialThatCanFail) {
+  const std::string t = replace_line(
+      kBase, "radius = 0.1",
+      "radius = 0.1\n[body.pre_failed]\nbox = {min = [0.45, 0.6], max = [0.55, 0.65]}");
+  expect_error(t, line_of(t, "[body.pre_failed]"), "body[1].pre_failed",
+               "only a material that can fail");
+}
+
+TEST(IoCaseErrors, FluidVolumeProbeNeedsABox) {
+  const std::string t = replace_line(kBase, "kind = \"body_pressure\"", "kind = \"fluid_volume\"");
+  expect_error(t, line_of(t, "body = \"cyl\""), "output.probe[0].body", "unknown key");
+  const std::string m =
+      replace_line(replace_line(t, "body = \"cyl\"", ""), "position = [0.5, 0.6]", "");
+  expect_error(m, line_of(m, "[[output.probe]]"), "output.probe[0].box", "missing");
+}
+
 // numerics.fluid_integrator (docs/case_format.md): one of the two names, kick-drift-kick by
 // default; the symplectic step takes every body kind (here an elastic disc in a fixed tank).
 TEST(IoCaseErrors, FluidIntegratorIsChecked) {
