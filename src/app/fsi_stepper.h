@@ -110,6 +110,11 @@ class FsiStepper {
   // How many steps each criterion set since t = 0 (summary.json "step_limiters").
   long steps_limited_by(StepLimiter l) const { return limiter_steps_[static_cast<std::size_t>(l)]; }
   BodyLoad body_load(std::size_t b) const { return loads_[b]; }
+  // The time the body loads belong to: the step's end, or with the symplectic step its
+  // middle t_n+1/2, where the momentum pass computed them (docs/model.md §5; forces.csv).
+  double load_time() const {
+    return prm_.fluid_integrator == FluidIntegrator::Symplectic ? time_ - 0.5 * limit_.dt : time_;
+  }
   const std::vector<BodyLoad>& body_loads() const { return loads_; }
   // Momentum balance (README "Momentum balance"), both accumulated since t = 0: the fluid
   // impulse body b received as its integrator applied it (app/dual_time_stepping.h), and the

@@ -169,7 +169,7 @@ std::optional<VtkSeries::State> Recorder::vtk_state() const {
 }
 
 void Recorder::record_loads(double dt_prev) {
-  const double time = st_.time();
+  const double time = st_.load_time();  // the symplectic step's loads are of t_n+1/2
   const std::vector<BodyLoad>& loads = st_.body_loads();
   if (forces_) {
     std::vector<double> row{time};
