@@ -1,5 +1,6 @@
 #include "coupling/contact_layout.h"
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -35,7 +36,7 @@ ContactLayout plan_contact_layout(const std::vector<SolidBody>& bodies,
       l.ghosts.push_back({static_cast<std::uint32_t>(b), g});
   l.reference_ghosts = l.ghosts;
   l.planned_failed.assign(bodies.size(), 0);
-  l.has_slots.assign(bodies.size(), 0);
+  l.zone.assign(bodies.size(), {});
   return l;
 }
 
@@ -56,12 +57,11 @@ bool replan_around_failures(ContactLayout& l, const std::vector<SolidBody>& bodi
   std::size_t r = 0;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const SolidBody& body = bodies[b];
-    const std::vector<std::uint8_t> zone =
-        l.planned_failed[b] > 0 ? failure_zone(body) : std::vector<std::uint8_t>{};
+    l.zone[b] = l.planned_failed[b] > 0 ? failure_zone(body) : std::vector<std::uint8_t>{};
+    const std::vector<std::uint8_t>& zone = l.zone[b];
     for (; r < l.reference_ghosts.size() && l.reference_ghosts[r].body == b; ++r)
       if (zone.empty() || !zone[l.reference_ghosts[r].spec.parent])
         ghosts.push_back(l.reference_ghosts[r]);
-    l.has_slots[b] = 0;
     if (zone.empty()) continue;
     const std::vector<double>& failed = *failed_flags(body);
     const std::vector<double> spacing = particle_spacing(body);
@@ -74,7 +74,6 @@ bool replan_around_failures(ContactLayout& l, const std::vector<SolidBody>& bodi
         g.spec.weight = 0.0;
         ghosts.push_back(g);
       }
-      l.has_slots[b] = 1;
     }
   }
   l.ghosts = std::move(ghosts);
@@ -125,14 +124,19 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
     if (body.kind != BodyKind::Elastic) continue;
     // Faces opened by a crack: normals from the current configuration near failed particles,
     // and the layers behind the slots' parents counted there (coupling/failure_zone_ghosts.h).
-    const std::vector<std::uint8_t> zone = failure_zone(body);
-    if (zone.empty()) continue;
+    if (layout.zone.size() <= b || layout.zone[b].empty()) continue;
+    const std::vector<std::uint8_t>& zone = layout.zone[b];
     const std::span<Vec2> normals = std::span<Vec2>(contact.normal).subspan(o, body.size());
-    update_normals_near_failure(body, zone, normals);
+    // One cell list over the body's current positions for both (cells of the kernel support,
+    // and at least the layer probe's 0.75 d of the coarsest part).
+    double cell = body.kernel.support();
+    for (double d : body.spacing) cell = std::max(cell, d);
+    CellGrid grid;
+    grid.build(body.x, cell);
+    update_normals_near_failure(body, grid, zone, normals);
     const std::vector<double>& failed = *failed_flags(body);
     for (std::size_t i = 0; i < body.size(); ++i) contact.debris[o + i] = failed[i] > 0.5;
-    if (layout.has_slots.size() > b && layout.has_slots[b])
-      present[b] = layers_behind_now(body, normals, zone, layout.support);
+    present[b] = layers_behind_now(body, grid, normals, zone, layout.support);
   }
   // Ghosts follow their parent along its current normal (coupling/ghost_layers.h).
   for (std::size_t g = 0; g < layout.ghosts.size(); ++g) {

@@ -31,9 +31,10 @@ struct ContactLayout {
   // The reference plan, kept for re-planning; what it was planned for.
   std::vector<ContactGhost> reference_ghosts;
   double support = 0.0, ghost_spacing = 0.0;
-  // Per body: the failed count the ghosts are planned for, and whether it has slots.
+  // Per body: the failed count the ghosts are planned for, and the failure zone of those
+  // failed particles (coupling/failure_zone_ghosts.h; empty without failures).
   std::vector<std::size_t> planned_failed;
-  std::vector<std::uint8_t> has_slots;
+  std::vector<std::vector<std::uint8_t>> zone;
 
   std::size_t first_ghost() const { return offset.back(); }
   std::size_t size() const { return offset.back() + ghosts.size(); }
@@ -60,10 +61,10 @@ void init_contact_particles(ContactParticles& contact, const ContactLayout& layo
 
 // Copies the bodies' current position, velocity, acceleration and volume into the contact
 // set, with the current outward normal: n ∝ F^-T N for elastic bodies (Nanson), N rotated
-// by the body's angle for moving rigid bodies; near failed particles the current colour
-// gradient (coupling/surface_normals.h). Ghosts follow their parent along its normal, with
-// their weight times its volume; slots at the depth and weight the current configuration
-// asks for. Failed particles are marked as debris.
+// by the body's angle for moving rigid bodies; in the failure zone the layout was last planned
+// for (replan_around_failures), the current colour gradient (coupling/surface_normals.h). Ghosts
+// follow their parent along its normal, with their weight times its volume; slots at the depth and
+// weight the current configuration asks for. Failed particles are marked as debris.
 void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
                        const std::vector<SolidBody>& bodies);
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/cell_grid.h"
+#include "coupling/ghost_layers.h"
 #include "solid/eulerian_failed_interaction.h"
 #include "solid/solid_body.h"
 
@@ -32,49 +32,17 @@ std::vector<std::uint8_t> failure_zone(const SolidBody& body) {
   return in;
 }
 
-GhostDepths ghost_depths(double d, double support, double ghost_spacing) {
-  GhostDepths g;
-  g.layers = static_cast<int>(std::ceil(support / d - 1e-9));
-  g.cell = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
-  return g;
-}
-
-// The reference plan's cells (coupling/ghost_layers.cpp): from the back face (present + 1/2)
-// d in cells of m layers until K d is covered.
-double GhostDepths::depth(int present, int j) const {
-  const int needed = (layers - present + cell - 1) / cell;
-  return (j < needed ? present : 0) + 0.5 + (j + 0.5) * cell;
-}
-
-double GhostDepths::weight(int present, int j) const {
-  const int needed = (layers - present + cell - 1) / cell;
-  return j < needed ? static_cast<double>(cell) : 0.0;
-}
-
-std::vector<int> layers_behind_now(const SolidBody& body, std::span<const Vec2> normals,
+std::vector<int> layers_behind_now(const SolidBody& body, const CellGrid& grid,
+                                   std::span<const Vec2> normals,
                                    std::span<const std::uint8_t> zone, double support) {
   std::vector<int> present(body.size(), 0);
   if (zone.empty()) return present;
-  double dmax = body.dx;
-  for (double d : body.spacing) dmax = std::max(dmax, d);
-  CellGrid grid;
-  grid.build(body.x, dmax);
   const std::vector<double>* failed = failed_flags(body);
   for (std::size_t i = 0; i < body.size(); ++i) {
     const Vec2 n = normals[i];
     if (!zone[i] || norm2(n) == 0.0 || (failed != nullptr && (*failed)[i] > 0.5)) continue;
     const double d = body.spacing.size() == body.size() ? body.spacing[i] : body.dx;
-    const int K = ghost_depths(d, support, 0.0).layers;
-    auto occupied = [&](Vec2 p) {
-      bool found = false;
-      grid.for_each_candidate(p, [&](std::uint32_t j) {
-        if (j != i && norm2(body.x[j] - p) < 0.5625 * d * d) found = true;  // within 0.75 d
-      });
-      return found;
-    };
-    int k = 0;
-    while (k < K && occupied(body.x[i] - (k + 1) * d * n)) ++k;
-    present[i] = k;
+    present[i] = layers_behind(grid, body.x, body.x[i], n, d, ghost_depths(d, support, 0.0).layers);
   }
   return present;
 }

@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cell_grid.h"
 #include "core/vec.h"
 
 namespace slamsph {
@@ -38,24 +39,12 @@ struct SolidBody;
 // particle of the body has failed or its law cannot fail.
 std::vector<std::uint8_t> failure_zone(const SolidBody& body);
 
-// Layers to fill behind a particle of spacing d and its ghost cell depth m in layers, for a
-// kernel support `support` and ghost cells `ghost_spacing` deep (0: one layer per cell); as
-// the reference plan (coupling/ghost_layers.h).
-struct GhostDepths {
-  int layers = 0;  // K = ceil(support / d)
-  int cell = 1;    // m = max(1, floor(ghost_spacing / d))
-  int slots() const { return (layers + cell - 1) / cell; }
-  // Slot j of a particle with `present` layers behind it: depth in d and volume weight (0 if
-  // not needed, then at the depth it would have with nothing behind).
-  double depth(int present, int j) const;
-  double weight(int present, int j) const;
-};
-GhostDepths ghost_depths(double d, double support, double ghost_spacing);
-
-// For every particle with zone[i] and a non-zero normals[i]: the number of body layers
-// behind it along normals[i] in the current configuration (body.x), at most `support`'s
-// K; 0 elsewhere.
-std::vector<int> layers_behind_now(const SolidBody& body, std::span<const Vec2> normals,
+// For every particle with zone[i], not failed and with a non-zero normals[i]: the body layers
+// behind it along normals[i] in the current configuration (body.x, binned in `grid` with cells
+// of at least 0.75 of the coarsest spacing; coupling/ghost_layers.h layers_behind), at most the
+// K of `support`; 0 elsewhere.
+std::vector<int> layers_behind_now(const SolidBody& body, const CellGrid& grid,
+                                   std::span<const Vec2> normals,
                                    std::span<const std::uint8_t> zone, double support);
 
 }  // namespace slamsph

@@ -4,9 +4,28 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/cell_grid.h"
-
 namespace slamsph {
+
+GhostDepths ghost_depths(double d, double support, double ghost_spacing) {
+  GhostDepths g;
+  g.layers = static_cast<int>(std::ceil(support / d - 1e-9));
+  g.cell = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
+  return g;
+}
+
+int layers_behind(const CellGrid& grid, std::span<const Vec2> pts, Vec2 x, Vec2 n, double d,
+                  int K) {
+  auto occupied = [&](Vec2 p) {
+    bool found = false;
+    grid.for_each_candidate(p, [&](std::uint32_t j) {
+      if (norm2(pts[j] - p) < 0.5625 * d * d) found = true;  // within 0.75 d
+    });
+    return found;
+  };
+  int present = 0;
+  while (present < K && occupied(x - (present + 1) * d * n)) ++present;
+  return present;
+}
 
 std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
                                          const std::vector<Vec2>& normals,
@@ -21,28 +40,16 @@ std::vector<GhostSpec> plan_ghost_layers(const std::vector<Vec2>& X,
   for (double d : spacing) dmax = std::max(dmax, d);
   CellGrid grid;
   grid.build(X, dmax);
-  auto occupied = [&](Vec2 p, double d) {
-    bool found = false;
-    grid.for_each_candidate(p, [&](std::uint32_t j) {
-      if (norm2(X[j] - p) < 0.5625 * d * d)
-        found = true;  // within 0.75 d: tolerant of offset ring layers
-    });
-    return found;
-  };
   for (std::size_t i = 0; i < X.size(); ++i) {
     const Vec2 n = normals[i];
     if (norm2(n) == 0.0) continue;
     const double d = spacing[i];
-    const int K = static_cast<int>(std::ceil(support / d - 1e-9));
-    const int m = std::max(1, static_cast<int>(std::floor(ghost_spacing / d + 1e-9)));
-    int present = 0;
-    while (present < K && occupied(X[i] - (present + 1) * d * n, d)) ++present;
+    const GhostDepths g = ghost_depths(d, support, ghost_spacing);
+    const int present = layers_behind(grid, X, X[i], n, d, g.layers);
     // Cells of m layers from the back face (present + 1/2) d until K d is covered; with
     // m = 1 the depths are present + 1 ... K exactly.
-    const int cells = (K - present + m - 1) / m;
-    for (int j = 0; j < cells; ++j)
-      out.push_back(
-          {static_cast<std::uint32_t>(i), present + 0.5 + (j + 0.5) * m, static_cast<double>(m)});
+    for (int j = 0; j < g.cells(present); ++j)
+      out.push_back({static_cast<std::uint32_t>(i), g.depth(present, j), g.weight(present, j)});
   }
   return out;
 }

@@ -15,9 +15,37 @@
 #include <span>
 #include <vector>
 
+#include "core/cell_grid.h"
 #include "core/vec.h"
 
 namespace slamsph {
+
+// How the missing depths behind a particle of spacing d are filled, for a kernel support
+// `support` and ghost cells `ghost_spacing` deep (0: one layer per cell): K = ceil(support /
+// d) layers, cells of m = max(1, floor(ghost_spacing / d)) layers from the back face. The
+// rule of plan_ghost_layers, shared with the re-plan around failures
+// (coupling/failure_zone_ghosts.h).
+struct GhostDepths {
+  int layers = 0;  // K
+  int cell = 1;    // m
+  // Cells needed with `present` body layers behind the particle; enough for none: slots().
+  int cells(int present) const { return (layers - present + cell - 1) / cell; }
+  int slots() const { return cells(0); }
+  // Cell j: depth in d and volume weight. A cell not needed (j >= cells(present)) has weight
+  // 0 and the depth it would have with nothing behind.
+  double depth(int present, int j) const {
+    return (j < cells(present) ? present : 0) + 0.5 + (j + 0.5) * cell;
+  }
+  double weight(int present, int j) const {
+    return j < cells(present) ? static_cast<double>(cell) : 0.0;
+  }
+};
+GhostDepths ghost_depths(double d, double support, double ghost_spacing);
+
+// Body layers behind x along -n at spacing d: k = 1, 2, ... while a point of `pts` (binned in
+// `grid`, cells >= 0.75 d) lies within 0.75 d of x - k d n (tolerant of offset ring layers);
+// at most K.
+int layers_behind(const CellGrid& grid, std::span<const Vec2> pts, Vec2 x, Vec2 n, double d, int K);
 
 struct GhostSpec {
   std::uint32_t parent = 0;  // particle index in the body

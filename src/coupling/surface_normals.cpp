@@ -31,13 +31,11 @@ std::vector<Vec2> reference_surface_normals(const std::vector<Vec2>& X,
   return n;
 }
 
-void update_normals_near_failure(const SolidBody& body, std::span<const std::uint8_t> zone,
-                                 std::span<Vec2> normals) {
+void update_normals_near_failure(const SolidBody& body, const CellGrid& all,
+                                 std::span<const std::uint8_t> zone, std::span<Vec2> normals) {
   if (zone.empty()) return;
   const Kernel& kernel = body.kernel;
   const double r = kernel.support();
-  CellGrid all;
-  all.build(body.x, r);
   for (std::size_t i = 0; i < body.size(); ++i) {
     if (!zone[i]) continue;
     const Vec2 xi = body.x[i];

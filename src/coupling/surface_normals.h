@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/vec.h"
 
@@ -23,8 +24,9 @@ struct SolidBody;
 // normal of the current configuration, n ∝ −Σ_j V_j ∇W_ij over the body's particles at their
 // current positions x with their current volumes V0 det F, written into normals[i] (zero
 // inside, the same threshold as the reference normals). Others are left as they are. No-op
-// for an empty zone (no particle of the body has failed).
-void update_normals_near_failure(const SolidBody& body, std::span<const std::uint8_t> zone,
-                                 std::span<Vec2> normals);
+// for an empty zone (no particle of the body has failed). `grid` bins body.x with cells of
+// at least the body kernel's support.
+void update_normals_near_failure(const SolidBody& body, const CellGrid& grid,
+                                 std::span<const std::uint8_t> zone, std::span<Vec2> normals);
 
 }  // namespace slamsph

@@ -276,17 +276,13 @@ void setup_body(SolidBody& body, const BodySetup& cfg) {
     if (failed == nullptr)
       throw InputError("body '" + cfg.name + "': material '" + mat.name +
                        "' cannot fail, so no particle can start failed (pre_failed)");
-    std::vector<double>& flag = *failed;
-    std::size_t marked = 0;
+    // (A box around no particle is the case builder's input error, with file and line.)
     for (std::size_t i = 0; i < n; ++i)
       for (const Box& b : cfg.pre_failed_boxes)
-        if (inside(b, body.X[i]) && flag[i] < 0.5) {
-          flag[i] = 1.0;
+        if (inside(b, body.X[i])) {
+          (*failed)[i] = 1.0;
           if (damage != nullptr) (*damage)[i] = 1.0;
-          ++marked;
         }
-    if (marked == 0)
-      throw InputError("body '" + cfg.name + "': no particle lies inside the pre_failed boxes");
   }
   // The initial state (F from x = X, i.e. I to round-off) is the first committed update;
   // afterwards the law is evaluated once per sub-step by advance_elastic.

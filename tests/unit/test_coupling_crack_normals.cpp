@@ -40,7 +40,8 @@ SolidBody bar() {
 std::vector<Vec2> gathered_normals(const std::vector<SolidBody>& bodies) {
   std::vector<std::vector<Vec2>> ref;
   for (const SolidBody& b : bodies) ref.push_back(reference_surface_normals(b.X, b.V0, b.kernel));
-  const ContactLayout layout = plan_contact_layout(bodies, ref, bodies[0].kernel.support());
+  ContactLayout layout = plan_contact_layout(bodies, ref, bodies[0].kernel.support());
+  replan_around_failures(layout, bodies);  // as every rate evaluation does before the gather
   ContactParticles c;
   init_contact_particles(c, layout);
   gather_body_state(c, layout, bodies);
