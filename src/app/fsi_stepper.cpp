@@ -147,8 +147,12 @@ void FsiStepper::step() {
     f.p[i] = eos.pressure(f.rho[i]);
   });
   clock.lap(t.fluid_integration);
+  end_step(dt, clock, t);
+}
+
+void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t) {
   // Acoustic damping near the chosen tank walls, over the whole step (absorbing_zone.h).
-  zone_momentum_ += apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
+  zone_momentum_ += apply_absorbing_zone(sys_.fluid, prm_.absorbing_zone, sys_.eos, dt, exec_);
   ++steps_;
   check_state();
   clock.lap(t.checks_and_zone);
@@ -213,10 +217,7 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
     f.p[i] = eos.pressure(f.rho[i]);
   });
   clock.lap(t.fluid_integration);
-  zone_momentum_ += apply_absorbing_zone(f, prm_.absorbing_zone, eos, dt, exec_);
-  ++steps_;
-  check_state();
-  clock.lap(t.checks_and_zone);
+  end_step(dt, clock, t);
 }
 
 void FsiStepper::check_state() const {

@@ -156,6 +156,8 @@ class FsiStepper {
   // Advances every body over [t, t + hdt] holding its fluid force (a half of the symplectic
   // step), with the sub-step averages of that half.
   void advance_bodies_half(double t, double hdt);
+  // Both steps' end: the absorbing zone over the step, the step count, the state check.
+  void end_step(double dt, PhaseClock& clock, PhaseTimes& t);
   void check_state() const;
   // Every body particle finite and inside the domain at `time`; else DivergenceError.
   void check_bodies(double time) const;
