@@ -319,7 +319,6 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  slamsph::Executor::use_passive_waiting(argv);
   slamsph::install_stop_handlers();
   try {
     return dispatch(argc, argv);

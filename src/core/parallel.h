@@ -7,21 +7,33 @@
 // Loops that need several passes with a data dependency between them (the solid sub-step,
 // solid/elastic_substep.h) run inside one parallel region instead (Executor::run_team): every
 // thread takes the same contiguous share of the particles in every pass and the passes are
-// separated by Team::barrier(). Opening a region costs a fork and a join (two barriers), so
-// a team saves two thirds of the synchronisation of a loop of for_each calls.
+// separated by Team::barrier().
 // The executor counts the parallel regions it opens and the barriers of its teams
 // (sync_counts) so that tests can hold the synchronisation per sub-step fixed.
+//
+// The threads are slamsph's own (ThreadPool, parallel.cpp), not OpenMP's (issue 13 item 2).
+// A waiting thread spins for a bounded time (kSpinMicroseconds) and then sleeps on a futex,
+// and does not spin at all while the machine has more runnable threads than this process's
+// CPUs: on idle cores a region starts and ends in about a microsecond, as with a spinning
+// runtime, and on cores shared with other processes a thread whose partner is descheduled
+// gives its core back at once instead of holding it (libgomp's default spins up to
+// ~300 000 iterations and collapsed such runs 10-20x; its passive policy made every region
+// a futex wake-up and a 3 200-particle fluid 1.75x slower on 2 idle threads than on 1).
 #pragma once
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace slamsph {
+
+class ThreadPool;  // parallel.cpp: the worker threads and their spin-then-sleep waiting
 
 // Synchronisation of an executor since its construction.
 struct SyncCounts {
@@ -53,21 +65,26 @@ class Team {
 
  private:
   friend class Executor;
-  Team(int rank, int size, std::atomic<std::uint64_t>* barriers)
-      : rank_(rank), size_(size), barriers_(barriers) {}
+  Team(int rank, int size, std::atomic<std::uint64_t>* barriers, ThreadPool* pool)
+      : rank_(rank), size_(size), barriers_(barriers), pool_(pool) {}
   int rank_ = 0;
   int size_ = 1;
   std::atomic<std::uint64_t>* barriers_ = nullptr;
+  ThreadPool* pool_ = nullptr;
 };
 
 class Executor {
  public:
   explicit Executor(int threads = 1);
-  Executor(const Executor& o) : threads_(o.threads_) {}
+  // Copies share the worker threads (the pool is made at the first parallel region); an
+  // executor and its copies must not open regions from two threads at once.
+  Executor(const Executor& o) : threads_(o.threads_), pool_(o.pool_) {}
   Executor& operator=(const Executor& o) {
     threads_ = o.threads_;
+    pool_ = o.pool_;
     return *this;
   }
+  ~Executor();
   int threads() const { return threads_; }
 
   // The threads worth using for a team over `items` items of which each thread should have
@@ -79,55 +96,72 @@ class Executor {
   }
 
   // f(team) on each of min(threads, threads()) threads of one parallel region (see the
-  // header comment); with one thread, f runs on the caller and no region is opened.
+  // header comment); with one thread, or called from inside a region, f runs on the caller
+  // as a team of one and no region is opened.
   template <class F>
   void run_team(int threads, F&& f) const {
     const int t = std::clamp(threads, 1, threads_);
-    if (t == 1) {
-      f(Team(0, 1, &barriers_));
+    if (t == 1 || in_region()) {
+      f(Team(0, 1, &barriers_, nullptr));
       return;
     }
-    count_region();
-#pragma omp parallel num_threads(t)
-    f(Team(team_rank(), team_size(), &barriers_));
+    ThreadPool* pool = this->pool();
+    region(t, [&](int rank) { f(Team(rank, t, &barriers_, pool)); });
   }
 
   SyncCounts sync_counts() const {
     return {regions_.load(std::memory_order_relaxed), barriers_.load(std::memory_order_relaxed)};
   }
 
+  // f(i) for i in [0, n), each thread a contiguous share (fewer than kMinParallel items run
+  // on the caller).
+  static constexpr std::size_t kMinParallel = 257;
   template <class F>
   void for_each(std::size_t n, F&& f) const {
-    const long long count = static_cast<long long>(n);
-    if (count > 256 && threads_ > 1) count_region();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (count > 256)
-    for (long long i = 0; i < count; ++i) f(static_cast<std::size_t>(i));
+    if (n < kMinParallel || threads_ == 1 || in_region()) {
+      for (std::size_t i = 0; i < n; ++i) f(i);
+      return;
+    }
+    region(threads_, [&](int rank) {
+      const auto [b, e] = share(n, rank, threads_);
+      for (std::size_t i = b; i < e; ++i) f(i);
+    });
   }
 
-  // Chunked variant: f(begin, end) on contiguous ranges, one or more per thread.
+  // Chunked variant: f(begin, end) on threads() contiguous ranges, one per thread.
   template <class F>
   void for_ranges(std::size_t n, F&& f) const {
-    const long long chunks = threads_;
-    if (threads_ > 1) count_region();
-#pragma omp parallel for schedule(static, 1) num_threads(threads_)
-    for (long long c = 0; c < chunks; ++c) {
-      const std::size_t b = n * static_cast<std::size_t>(c) / static_cast<std::size_t>(chunks);
-      const std::size_t e = n * static_cast<std::size_t>(c + 1) / static_cast<std::size_t>(chunks);
-      f(b, e);
+    if (threads_ == 1 || in_region()) {
+      for (int c = 0; c < threads_; ++c) {
+        const auto [b, e] = share(n, c, threads_);
+        f(b, e);
+      }
+      return;
     }
+    region(threads_, [&](int rank) {
+      const auto [b, e] = share(n, rank, threads_);
+      f(b, e);
+    });
   }
 
   // f(b) for every band b in [0, n): first the even bands, in parallel, then the odd ones.
   // For pair loops over banded particles (core/cell_grid.h, BandedPairs) in which the task of
   // band b writes only to bands b and b + 1: tasks running together write disjoint data, and
-  // every particle receives its contributions in the same order for any thread count.
+  // every particle receives its contributions in the same order for any thread count. The
+  // bands of one parity are handed out one at a time (their costs differ).
   template <class F>
   void for_alternating(std::size_t n, F&& f) const {
     for (std::size_t parity = 0; parity < 2; ++parity) {
-      const long long count = static_cast<long long>((n + 1 - parity) / 2);
-      if (count > 1 && threads_ > 1) count_region();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_) if (count > 1)
-      for (long long k = 0; k < count; ++k) f(2 * static_cast<std::size_t>(k) + parity);
+      const std::size_t count = (n + 1 - parity) / 2;
+      if (count < 2 || threads_ == 1 || in_region()) {
+        for (std::size_t k = 0; k < count; ++k) f(2 * k + parity);
+        continue;
+      }
+      std::atomic<std::size_t> next{0};
+      region(threads_, [&](int) {
+        for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < count;)
+          f(2 * k + parity);
+      });
     }
   }
 
@@ -135,14 +169,23 @@ class Executor {
   template <class G>
   double max_of(std::size_t n, G&& g,
                 double init = -std::numeric_limits<double>::infinity()) const {
+    auto max_range = [&](std::size_t b, std::size_t e) {
+      double m = init;
+      for (std::size_t i = b; i < e; ++i) {
+        const double v = g(i);
+        if (v > m) m = v;
+      }
+      return m;
+    };
+    if (n < kMinParallel || threads_ == 1 || in_region()) return max_range(0, n);
+    std::vector<double> part(static_cast<std::size_t>(threads_), init);
+    region(threads_, [&](int rank) {
+      const auto [b, e] = share(n, rank, threads_);
+      part[static_cast<std::size_t>(rank)] = max_range(b, e);
+    });
     double m = init;
-    const long long count = static_cast<long long>(n);
-    if (count > 256 && threads_ > 1) count_region();
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m) if (count > 256)
-    for (long long i = 0; i < count; ++i) {
-      const double v = g(static_cast<std::size_t>(i));
+    for (const double v : part)
       if (v > m) m = v;
-    }
     return m;
   }
 
@@ -156,15 +199,22 @@ class Executor {
   T sum_of(std::size_t n, G&& g) const {
     const std::size_t blocks = (n + kSumBlock - 1) / kSumBlock;
     std::vector<T> part(blocks, T{});
-    const long long count = static_cast<long long>(blocks);
-    if (count > 1 && threads_ > 1) count_region();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (count > 1)
-    for (long long k = 0; k < count; ++k) {
-      const std::size_t b = static_cast<std::size_t>(k) * kSumBlock;
-      const std::size_t e = std::min(n, b + kSumBlock);
-      T s{};
-      for (std::size_t i = b; i < e; ++i) s += g(i);
-      part[static_cast<std::size_t>(k)] = s;
+    auto sum_blocks = [&](std::size_t kb, std::size_t ke) {
+      for (std::size_t k = kb; k < ke; ++k) {
+        const std::size_t b = k * kSumBlock;
+        const std::size_t e = std::min(n, b + kSumBlock);
+        T s{};
+        for (std::size_t i = b; i < e; ++i) s += g(i);
+        part[k] = s;
+      }
+    };
+    if (blocks < 2 || threads_ == 1 || in_region()) {
+      sum_blocks(0, blocks);
+    } else {
+      region(threads_, [&](int rank) {
+        const auto [kb, ke] = share(blocks, rank, threads_);
+        sum_blocks(kb, ke);
+      });
     }
     T total{};
     for (const T& s : part) total += s;
@@ -178,32 +228,45 @@ class Executor {
   // unknown.
   static int affinity_threads();
   // The first entry of OMP_NUM_THREADS if it is a whole number in [1, kMaxThreads], else 0.
+  // (slamsph does not use OpenMP; the variable is honoured as the usual way to set a
+  // thread count.)
   static int env_threads();
   // The default thread count of a run: OMP_NUM_THREADS, else the affinity mask, else the
   // hardware.
   static int default_threads();
 
-  // Call first thing in main(). libgomp spins up to ~300 000 iterations at every barrier
-  // before it sleeps; when the cores are shared with other processes a spinning thread
-  // holds a core its partner needs, and a run with 2 threads on 2 busy cores measured 7-20x
-  // slower than with 1 thread (/work notes of issue 12; README "Threads"). Waiting threads
-  // should sleep instead (OMP_WAIT_POLICY=passive), but libgomp reads that variable only
-  // once, when it is loaded, before main() runs. So, unless the user has chosen a policy
-  // (OMP_WAIT_POLICY or GOMP_SPINCOUNT is set), this sets OMP_WAIT_POLICY=passive and
-  // re-executes the program (/proc/self/exe) with the same arguments. Returns only if no
-  // re-execution was needed or it failed (the run then goes on with libgomp's default).
-  static void use_passive_waiting(char** argv);
-  // The wait policy in force: "OMP_WAIT_POLICY=<v>", "GOMP_SPINCOUNT=<v>" or "libgomp default".
+  // How long a waiting thread spins at most before it sleeps on a futex [µs]:
+  // kSpinMicroseconds, or SLAMSPH_SPIN_US (0 to 100 000) when set, read when an executor's
+  // threads start. It spins only while the machine has no more runnable threads than this
+  // process's CPUs (ThreadPool::adapt_spin in parallel.cpp).
+  static constexpr int kSpinMicroseconds = 50;
+  static int spin_microseconds();
+  // The wait policy in force, for summary.json.
   static std::string wait_policy();
 
  private:
-  void count_region() const {
-    regions_.fetch_add(1, std::memory_order_relaxed);
+  // [b, e) of rank's contiguous share of n items among t threads.
+  static std::pair<std::size_t, std::size_t> share(std::size_t n, int rank, int t) {
+    return {n * static_cast<std::size_t>(rank) / static_cast<std::size_t>(t),
+            n * static_cast<std::size_t>(rank + 1) / static_cast<std::size_t>(t)};
   }
-  static int team_rank();
-  static int team_size();
+  // job(rank) for rank in [0, t) on t threads, rank 0 on the caller; returns when all are
+  // done. An exception thrown by a job is rethrown here (the first one).
+  template <class J>
+  void region(int t, J&& job) const {
+    regions_.fetch_add(1, std::memory_order_relaxed);
+    using Job = std::remove_reference_t<J>;
+    run_region(
+        t, [](void* ctx, int rank) { (*static_cast<Job*>(ctx))(rank); },
+        const_cast<void*>(static_cast<const void*>(&job)));
+  }
+  void run_region(int t, void (*fn)(void*, int), void* ctx) const;
+  ThreadPool* pool() const;
+  // True on a thread that is running a region's job (nested loops then run serially).
+  static bool in_region();
 
   int threads_ = 1;
+  mutable std::shared_ptr<ThreadPool> pool_;
   mutable std::atomic<std::uint64_t> regions_{0};
   mutable std::atomic<std::uint64_t> barriers_{0};
 };

@@ -487,7 +487,8 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
     EXPECT_EQ(threads_of("env -u OMP_NUM_THREADS taskset -c 0", ""), 1);
   }
   EXPECT_GE(threads_of("env OMP_NUM_THREADS=junk", ""), 1);  // ignored, not fatal
-  // Waiting threads sleep unless the user chose a libgomp policy (core/parallel.h).
+  // Waiting threads spin for a bounded time, then sleep (core/parallel.h); the summary says
+  // how long, and SLAMSPH_SPIN_US changes it.
   auto policy = [&](const std::string& prefix) {
     EXPECT_GE(threads_of(prefix, ""), 1);
     const std::string s = slurp(work() / "out" / "summary.json");
@@ -495,9 +496,12 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
     return at == std::string::npos ? std::string("?")
                                    : s.substr(at + 23, s.find('"', at + 23) - at - 23);
   };
-  EXPECT_EQ(policy("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT"), "OMP_WAIT_POLICY=passive");
-  EXPECT_EQ(policy("env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=5000"), "GOMP_SPINCOUNT=5000");
-  EXPECT_EQ(policy("env OMP_WAIT_POLICY=active"), "OMP_WAIT_POLICY=active");
+  EXPECT_EQ(policy("env -u SLAMSPH_SPIN_US"),
+            "spin up to 50 us unless the CPUs are oversubscribed, then sleep");
+  EXPECT_EQ(policy("env SLAMSPH_SPIN_US=0"),
+            "spin up to 0 us unless the CPUs are oversubscribed, then sleep");
+  EXPECT_EQ(policy("env SLAMSPH_SPIN_US=junk"),
+            "spin up to 50 us unless the CPUs are oversubscribed, then sleep");
 }
 
 // Issue 12: a run stopped by --max-steps 0 was reported "completed" with a 0 N/m "peak";

@@ -1,0 +1,136 @@
+// The executor's own threads (core/parallel.h, issue 13 item 2): every loop form gives the
+// same answer on 1, 2 and 3 threads, a team's barrier separates its passes, a job's
+// exception reaches the caller, nested loops run on the calling thread, and a waiting
+// thread that spins for no time (SLAMSPH_SPIN_US=0, every wait a futex sleep) still wakes.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <numeric>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "core/parallel.h"
+#include "core/vec.h"
+
+namespace slamsph {
+namespace {
+
+double value(std::size_t i) {
+  return std::sin(0.37 * static_cast<double>(i)) * 1e3 + 1e-7 * static_cast<double>(i);
+}
+
+TEST(Executor, LoopsGiveTheSameAnswerOnAnyThreadCount) {
+  const std::size_t n = 100003;
+  std::vector<double> ref_each;
+  double ref_sum = 0.0, ref_max = 0.0;
+  for (int threads : {1, 2, 3}) {
+    const Executor exec(threads);
+    std::vector<double> each(n, 0.0);
+    exec.for_each(n, [&](std::size_t i) { each[i] = 2.0 * value(i); });
+    const double sum = exec.sum_of<double>(n, [&](std::size_t i) { return value(i); });
+    const double mx = exec.max_of(n, [&](std::size_t i) { return value(i); });
+    std::vector<int> hits(n, 0);
+    exec.for_ranges(n, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) ++hits[i];
+    });
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hits[i], 1) << i;
+    std::vector<int> band_hits(1001, 0);
+    exec.for_alternating(band_hits.size(), [&](std::size_t b) { ++band_hits[b]; });
+    for (std::size_t b = 0; b < band_hits.size(); ++b) ASSERT_EQ(band_hits[b], 1) << b;
+    if (threads == 1) {
+      ref_each = each;
+      ref_sum = sum;
+      ref_max = mx;
+    } else {
+      EXPECT_EQ(each, ref_each) << threads;
+      EXPECT_EQ(sum, ref_sum) << threads;  // bit-identical: fixed blocks
+      EXPECT_EQ(mx, ref_max) << threads;
+    }
+  }
+  EXPECT_EQ(Executor(2).max_of(
+                0, [](std::size_t) { return 1.0; }, -5.0),
+            -5.0);
+}
+
+// Pass k of a team reads what every thread wrote in pass k − 1 (a shifted neighbour outside
+// its own share): wrong as soon as one barrier lets a thread through early.
+void check_team_barriers(int threads) {
+  const Executor exec(threads);
+  const std::size_t n = 4096;
+  const int passes = 2000;
+  std::vector<long> a(n, 0), b(n, 0);
+  exec.run_team(threads, [&](const Team& team) {
+    for (int k = 0; k < passes; ++k) {
+      std::vector<long>& src = (k % 2 == 0) ? a : b;
+      std::vector<long>& dst = (k % 2 == 0) ? b : a;
+      team.for_each(n, [&](std::size_t i) { dst[i] = src[(i + n / 2 + 1) % n] + 1; });
+      team.barrier();
+    }
+  });
+  const std::vector<long>& last = (passes % 2 == 0) ? a : b;
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(last[i], passes) << i;
+  EXPECT_EQ(exec.sync_counts().regions, threads > 1 ? 1u : 0u);
+  EXPECT_EQ(exec.sync_counts().barriers, threads > 1 ? static_cast<unsigned>(passes) : 0u);
+}
+
+TEST(Executor, TeamBarriersSeparateThePasses) {
+  for (int threads : {1, 2, 3}) check_team_barriers(threads);
+}
+
+TEST(Executor, ThreadsThatSleepAtOnceStillWake) {
+  ASSERT_EQ(setenv("SLAMSPH_SPIN_US", "0", 1), 0);
+  EXPECT_EQ(Executor::spin_microseconds(), 0);
+  check_team_barriers(2);
+  const Executor exec(2);
+  for (int k = 0; k < 2000; ++k) {  // many short regions, each a futex wake-up
+    std::vector<int> v(1000, 0);
+    exec.for_each(v.size(), [&](std::size_t i) { v[i] = k; });
+    ASSERT_EQ(std::accumulate(v.begin(), v.end(), 0L), 1000L * k);
+  }
+  unsetenv("SLAMSPH_SPIN_US");
+  EXPECT_EQ(Executor::spin_microseconds(), Executor::kSpinMicroseconds);
+}
+
+TEST(Executor, AJobsExceptionReachesTheCaller) {
+  const Executor exec(2);
+  EXPECT_THROW(exec.for_each(10000,
+                             [&](std::size_t i) {
+                               if (i == 9999) throw std::runtime_error("late item");
+                             }),
+               std::runtime_error);
+  // The executor is usable afterwards.
+  EXPECT_EQ(exec.sum_of<double>(5000, [](std::size_t) { return 1.0; }), 5000.0);
+}
+
+TEST(Executor, NestedLoopsRunOnTheCallingThread) {
+  const Executor exec(2);
+  std::vector<std::thread::id> outer(2), inner(2);
+  exec.run_team(2, [&](const Team& team) {
+    outer[static_cast<std::size_t>(team.rank())] = std::this_thread::get_id();
+    std::thread::id seen;
+    exec.for_each(10000, [&](std::size_t i) {
+      if (i == 0 || i == 9999) seen = std::this_thread::get_id();
+    });
+    inner[static_cast<std::size_t>(team.rank())] = seen;
+  });
+  EXPECT_NE(outer[0], outer[1]);
+  EXPECT_EQ(inner[0], outer[0]);
+  EXPECT_EQ(inner[1], outer[1]);
+  // One region: the nested loops opened none.
+  EXPECT_EQ(exec.sync_counts().regions, 1u);
+}
+
+TEST(Executor, CopiesShareTheirThreads) {
+  const Executor a(2);
+  const Executor b = a;
+  std::vector<double> v(5000, 0.0);
+  a.for_each(v.size(), [&](std::size_t i) { v[i] = 1.0; });
+  b.for_each(v.size(), [&](std::size_t i) { v[i] += 1.0; });
+  EXPECT_EQ(std::accumulate(v.begin(), v.end(), 0.0), 10000.0);
+}
+
+}  // namespace
+}  // namespace slamsph
