@@ -45,6 +45,7 @@ struct Request {
   bool no_output = false;
   bool overwrite = false;
   bool no_machine_probe = false;  // check: the calibration machine's costs, unscaled
+  bool exact_threads = false;     // run, resume: Executor::Load::Fixed
 };
 
 // "--threads" default text for the help: where the number comes from and its value now.
@@ -95,6 +96,7 @@ int run_or_check(const std::string& cmd, Request& req) {
   if (req.dx) rescale_resolution(cfg, *req.dx);
   RunOptions& opt = req.run;
   opt.write_output = !req.no_output;
+  opt.adapt_threads = !req.exact_threads;
   // Set-up warnings go out after the particles are built and before any time step.
   auto warn = [&](const Simulation& sim) {
     if (opt.quiet) return;
@@ -143,6 +145,7 @@ int resume_run(Request& req) {
   RunOptions& opt = req.run;
   opt.out_dir = dir;
   opt.write_output = true;
+  opt.adapt_threads = !req.exact_threads;
   const std::string checkpoint = latest_checkpoint(dir);
   Simulation sim(std::move(cfg), opt);
   sim.resume_from(checkpoint);
@@ -202,6 +205,10 @@ int dispatch(int argc, char** argv) {
                 "files slamsph wrote there, listed in its .slamsph_files); default: such a "
                 "folder is refused");
   run->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
+  run->add_flag("--exact-threads", req.exact_threads,
+                "Use --threads threads in every loop even while other programs keep the CPUs "
+                "busy (tests, timings); default: fewer then, as many as fit beside them "
+                "(results are the same either way)");
   run->add_flag("--no-output", req.no_output,
                 "Write no files (benchmarks); default: write everything");
 
@@ -236,6 +243,8 @@ int dispatch(int argc, char** argv) {
       ->check(CLI::Range(1, Executor::kMaxThreads))
       ->type_name("N");
   resume->add_flag("-q,--quiet", req.run.quiet, "Print nothing but errors");
+  resume->add_flag("--exact-threads", req.exact_threads,
+                   "Use --threads threads in every loop even while the CPUs are busy (as for run)");
 
   CLI::App* plot = app.add_subcommand("plot", "Redraw the PNG plots of a run from its folder");
   plot->add_option("dir", req.plot_dirs,

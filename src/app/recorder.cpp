@@ -437,6 +437,9 @@ void Recorder::write_summary(const RunStatus& status) const {
     summary.set("cpu_seconds", status.cpu_seconds);
   }
   summary.set("thread_wait_policy", Executor::wait_policy());
+  // Parallel loops that ran on fewer threads than asked because other programs kept the
+  // CPUs busy (core/parallel.h, Executor::Load::Adapt); results do not depend on it.
+  summary.set("loops_on_fewer_threads", static_cast<unsigned long>(exec_.sync_counts().reduced));
   summary.set("neighbour_rebuilds", st_.lists().rebuilds());
   summary.set("leaked_particles", st_.leaked_particles());
   summary.set("warnings", warnings_);  // the set-up warnings printed before the run

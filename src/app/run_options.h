@@ -16,6 +16,9 @@ struct RunOptions {
   bool overwrite = false;            // replace a previous run in out_dir (app/output_folder.h)
   double checkpoint_interval = 0.0;  // [s] simulated time between checkpoints; 0 = none
   double max_particles = 1e7;        // refuse a case estimated above this (app/case_checks.h)
+  // false: every loop uses `threads` threads even while other programs keep the CPUs busy
+  // (core/parallel.h, Executor::Load); results are the same either way.
+  bool adapt_threads = true;
 };
 
 // Options for driving a Simulation from code (tests, benchmarks): silent, no files.
@@ -24,6 +27,7 @@ inline RunOptions silent_options(int threads) {
   o.threads = threads;
   o.quiet = true;
   o.write_output = false;
+  o.adapt_threads = false;  // a test that asks for 2 threads gets 2
   return o;
 }
 

@@ -53,7 +53,8 @@ void remove_frames_from(const std::string& out_dir, int frame) {
 Simulation::Simulation(CaseConfig config, const RunOptions& options)
     : cfg_(std::move(config)),
       opt_(options),
-      exec_(options.threads > 0 ? options.threads : Executor::default_threads()) {
+      exec_(options.threads > 0 ? options.threads : Executor::default_threads(),
+            options.adapt_threads ? Executor::Load::Adapt : Executor::Load::Fixed) {
   if (opt_.end_time) cfg_.numerics.end_time = *opt_.end_time;
   warnings_ = setup_warnings(cfg_);
   check_case_size(cfg_, opt_.max_particles);

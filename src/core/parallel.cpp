@@ -110,7 +110,6 @@ class ThreadPool {
   ThreadPool& operator=(const ThreadPool&) = delete;
 
   void run(int t, void (*fn)(void*, int), void* ctx) {
-    adapt_spin();
     fn_ = fn;
     ctx_ = ctx;
     team_ = t;
@@ -136,6 +135,34 @@ class ThreadPool {
     }
   }
 
+  // Spinning pays only while every runnable thread has a CPU. With more runnable threads
+  // than CPUs (another program, or this one's threads beyond the CPUs) a thread that spins
+  // for its partner keeps the partner, which is waiting for a CPU, off it, and a thread that
+  // sleeps is woken promptly by the scheduler instead (measured on 2 cores next to two
+  // compilers: 2 threads on the 3 200-particle dam break 5.7 s wall sleeping at once, 6.5 s
+  // after 2 µs spins, 8.7 s after 5 µs, 15.4 s after 50 µs; 1 thread 6.1 s). And a region
+  // of two threads on cores that other programs keep busy ends only when both threads have
+  // been given a CPU: there one thread is faster than two (docs/validation.md §6 "Threads").
+  // So rank 0 looks at the machine's runnable count at most every kProbeInterval and
+  // counts the other programs' runnable threads (the count less this thread and the
+  // workers not asleep between regions); the threads that fit beside them on this
+  // process's CPUs are what an adapting executor uses (threads_now), and the workers spin
+  // only while all of the pool's threads fit (when the count cannot be read, nothing
+  // fits: one thread, no spinning).
+  int threads_now(int t) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_probe_ >= kProbeInterval) {
+      last_probe_ = now;
+      const int runnable = runnable_threads();
+      const int pool = static_cast<int>(workers_.size()) + 1;
+      const int asleep = static_cast<int>(start_.sleepers.load(std::memory_order_relaxed));
+      const int others = runnable < 0 ? cpus_ : std::max(0, runnable - 1 - (pool - 1 - asleep));
+      fitting_ = std::clamp(cpus_ - others, 1, pool);
+      spin_ns_.store(others + pool > cpus_ ? 0 : max_spin_ns_, std::memory_order_relaxed);
+    }
+    return std::min(t, fitting_);
+  }
+
  private:
   void call(int rank) {
     try {
@@ -158,32 +185,10 @@ class ThreadPool {
     }
   }
 
-  // Spinning pays only while every runnable thread has a CPU. With more runnable threads
-  // than CPUs (another program, or this one's threads beyond the CPUs) a thread that spins
-  // for its partner keeps the partner, which is waiting for a CPU, off it, and a thread that
-  // sleeps is woken promptly by the scheduler instead (measured on 2 cores next to two niced
-  // compilers: 2 threads on the 3 200-particle dam break 5.7 s wall sleeping at once, 6.5 s
-  // after 2 µs spins, 8.7 s after 5 µs, 15.4 s after 50 µs; 1 thread 6.1 s). So rank 0
-  // looks at the machine's runnable count every kProbeInterval and spins only while the
-  // other programs' runnable threads and this pool's threads together fit on this
-  // process's CPUs (when the count cannot be read, it sleeps).
-  void adapt_spin() {
-    if (max_spin_ns_ == 0) return;
-    const auto now = std::chrono::steady_clock::now();
-    if (now - last_probe_ < kProbeInterval) return;
-    last_probe_ = now;
-    const int runnable = runnable_threads();
-    // This thread and the workers not asleep between regions are among the runnable ones.
-    const int asleep = static_cast<int>(start_.sleepers.load(std::memory_order_relaxed));
-    const int own = 1 + std::max(0, static_cast<int>(workers_.size()) - asleep);
-    const int others = runnable - own;
-    const bool oversubscribed =
-        runnable < 0 || others + 1 + static_cast<int>(workers_.size()) > cpus_;
-    spin_ns_.store(oversubscribed ? 0 : max_spin_ns_, std::memory_order_relaxed);
-  }
   static constexpr std::chrono::milliseconds kProbeInterval{20};
   const std::int64_t max_spin_ns_;
   const int cpus_;
+  int fitting_ = 1;
   std::atomic<std::int64_t> spin_ns_{0};
   std::chrono::steady_clock::time_point last_probe_{};
   WaitWord start_, done_, barrier_;
@@ -199,7 +204,8 @@ class ThreadPool {
   std::vector<std::thread> workers_;
 };
 
-Executor::Executor(int threads) : threads_(std::clamp(threads, 1, kMaxThreads)) {}
+Executor::Executor(int threads, Load load)
+    : threads_(std::clamp(threads, 1, kMaxThreads)), load_(load) {}
 
 Executor::~Executor() = default;
 
@@ -211,6 +217,15 @@ ThreadPool* Executor::pool() const {
 
 void Executor::run_region(int t, void (*fn)(void*, int), void* ctx) const {
   pool()->run(t, fn, ctx);
+}
+
+int Executor::team_now(int t) const {
+  if (t <= 1 || in_region()) return 1;
+  ThreadPool* p = pool();
+  const int now = p->threads_now(t);  // also keeps the spin limit up to date
+  if (load_ == Load::Fixed) return t;
+  if (now < t) reduced_.fetch_add(1, std::memory_order_relaxed);
+  return now;
 }
 
 bool Executor::in_region() {

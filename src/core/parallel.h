@@ -39,6 +39,7 @@ class ThreadPool;  // parallel.cpp: the worker threads and their spin-then-sleep
 struct SyncCounts {
   std::uint64_t regions = 0;   // parallel regions opened (each a fork and a join)
   std::uint64_t barriers = 0;  // Team::barrier() calls of teams of two or more threads
+  std::uint64_t reduced = 0;   // loops run on fewer threads than asked (Load::Adapt)
 };
 
 // The threads of one parallel region opened by Executor::run_team. Each thread calls the
@@ -75,12 +76,19 @@ class Team {
 
 class Executor {
  public:
-  explicit Executor(int threads = 1);
+  // Fixed: every loop uses the threads asked for (tests, benchmarks). Adapt (the runs of
+  // the command line): while the machine has more runnable threads than this process's
+  // CPUs, a loop uses only as many threads as there are CPUs left by the other programs
+  // (at least 1). A loop's result does not depend on its thread count, so this changes
+  // the speed, never the results. ThreadPool::threads_now in parallel.cpp.
+  enum class Load { Fixed, Adapt };
+  explicit Executor(int threads = 1, Load load = Load::Fixed);
   // Copies share the worker threads (the pool is made at the first parallel region); an
   // executor and its copies must not open regions from two threads at once.
-  Executor(const Executor& o) : threads_(o.threads_), pool_(o.pool_) {}
+  Executor(const Executor& o) : threads_(o.threads_), load_(o.load_), pool_(o.pool_) {}
   Executor& operator=(const Executor& o) {
     threads_ = o.threads_;
+    load_ = o.load_;
     pool_ = o.pool_;
     return *this;
   }
@@ -100,8 +108,8 @@ class Executor {
   // as a team of one and no region is opened.
   template <class F>
   void run_team(int threads, F&& f) const {
-    const int t = std::clamp(threads, 1, threads_);
-    if (t == 1 || in_region()) {
+    const int t = team_now(std::clamp(threads, 1, threads_));
+    if (t == 1) {
       f(Team(0, 1, &barriers_, nullptr));
       return;
     }
@@ -110,7 +118,8 @@ class Executor {
   }
 
   SyncCounts sync_counts() const {
-    return {regions_.load(std::memory_order_relaxed), barriers_.load(std::memory_order_relaxed)};
+    return {regions_.load(std::memory_order_relaxed), barriers_.load(std::memory_order_relaxed),
+            reduced_.load(std::memory_order_relaxed)};
   }
 
   // f(i) for i in [0, n), each thread a contiguous share (fewer than kMinParallel items run
@@ -118,29 +127,34 @@ class Executor {
   static constexpr std::size_t kMinParallel = 257;
   template <class F>
   void for_each(std::size_t n, F&& f) const {
-    if (n < kMinParallel || threads_ == 1 || in_region()) {
+    const int t = n < kMinParallel ? 1 : team_now(threads_);
+    if (t == 1) {
       for (std::size_t i = 0; i < n; ++i) f(i);
       return;
     }
-    region(threads_, [&](int rank) {
-      const auto [b, e] = share(n, rank, threads_);
+    region(t, [&](int rank) {
+      const auto [b, e] = share(n, rank, t);
       for (std::size_t i = b; i < e; ++i) f(i);
     });
   }
 
-  // Chunked variant: f(begin, end) on threads() contiguous ranges, one per thread.
+  // Chunked variant: f(begin, end) on threads() contiguous ranges (the same ranges whatever
+  // the threads that run them).
   template <class F>
   void for_ranges(std::size_t n, F&& f) const {
-    if (threads_ == 1 || in_region()) {
+    const int t = team_now(threads_);
+    if (t == 1) {
       for (int c = 0; c < threads_; ++c) {
         const auto [b, e] = share(n, c, threads_);
         f(b, e);
       }
       return;
     }
-    region(threads_, [&](int rank) {
-      const auto [b, e] = share(n, rank, threads_);
-      f(b, e);
+    region(t, [&](int rank) {
+      for (int c = rank; c < threads_; c += t) {
+        const auto [b, e] = share(n, c, threads_);
+        f(b, e);
+      }
     });
   }
 
@@ -153,12 +167,13 @@ class Executor {
   void for_alternating(std::size_t n, F&& f) const {
     for (std::size_t parity = 0; parity < 2; ++parity) {
       const std::size_t count = (n + 1 - parity) / 2;
-      if (count < 2 || threads_ == 1 || in_region()) {
+      const int t = count < 2 ? 1 : team_now(threads_);
+      if (t == 1) {
         for (std::size_t k = 0; k < count; ++k) f(2 * k + parity);
         continue;
       }
       std::atomic<std::size_t> next{0};
-      region(threads_, [&](int) {
+      region(t, [&](int) {
         for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < count;)
           f(2 * k + parity);
       });
@@ -177,10 +192,11 @@ class Executor {
       }
       return m;
     };
-    if (n < kMinParallel || threads_ == 1 || in_region()) return max_range(0, n);
-    std::vector<double> part(static_cast<std::size_t>(threads_), init);
-    region(threads_, [&](int rank) {
-      const auto [b, e] = share(n, rank, threads_);
+    const int t = n < kMinParallel ? 1 : team_now(threads_);
+    if (t == 1) return max_range(0, n);
+    std::vector<double> part(static_cast<std::size_t>(t), init);
+    region(t, [&](int rank) {
+      const auto [b, e] = share(n, rank, t);
       part[static_cast<std::size_t>(rank)] = max_range(b, e);
     });
     double m = init;
@@ -208,11 +224,12 @@ class Executor {
         part[k] = s;
       }
     };
-    if (blocks < 2 || threads_ == 1 || in_region()) {
+    const int t = blocks < 2 ? 1 : team_now(threads_);
+    if (t == 1) {
       sum_blocks(0, blocks);
     } else {
-      region(threads_, [&](int rank) {
-        const auto [kb, ke] = share(blocks, rank, threads_);
+      region(t, [&](int rank) {
+        const auto [kb, ke] = share(blocks, rank, t);
         sum_blocks(kb, ke);
       });
     }
@@ -238,7 +255,7 @@ class Executor {
   // How long a waiting thread spins at most before it sleeps on a futex [µs]:
   // kSpinMicroseconds, or SLAMSPH_SPIN_US (0 to 100 000) when set, read when an executor's
   // threads start. It spins only while the machine has no more runnable threads than this
-  // process's CPUs (ThreadPool::adapt_spin in parallel.cpp).
+  // process's CPUs (ThreadPool::probe in parallel.cpp).
   static constexpr int kSpinMicroseconds = 50;
   static int spin_microseconds();
   // The wait policy in force, for summary.json.
@@ -261,14 +278,19 @@ class Executor {
         const_cast<void*>(static_cast<const void*>(&job)));
   }
   void run_region(int t, void (*fn)(void*, int), void* ctx) const;
+  // The threads a loop asking for t threads runs on now: 1 inside a region, t with
+  // Load::Fixed, with Load::Adapt possibly fewer (counted in sync_counts().reduced).
+  int team_now(int t) const;
   ThreadPool* pool() const;
   // True on a thread that is running a region's job (nested loops then run serially).
   static bool in_region();
 
   int threads_ = 1;
+  Load load_ = Load::Fixed;
   mutable std::shared_ptr<ThreadPool> pool_;
   mutable std::atomic<std::uint64_t> regions_{0};
   mutable std::atomic<std::uint64_t> barriers_{0};
+  mutable std::atomic<std::uint64_t> reduced_{0};
 };
 
 }  // namespace slamsph

@@ -138,10 +138,11 @@ TEST(GoldenRun, SmallFsiCaseLastRows) {
       fs::temp_directory_path() / ("slamsph_golden_" + std::to_string(::getpid()));
   fs::remove_all(root);
   fs::create_directories(root);
-  const std::string cmd = std::string("'") + SLAMSPH_BINARY + "' run '" + SLAMSPH_SOURCE_DIR +
-                          "/tests/regression/golden/fsi_small.toml' --max-steps 400 --threads 2" +
-                          " --quiet --out '" + (root / "out").string() + "' > '" +
-                          (root / "log.txt").string() + "' 2>&1";
+  const std::string cmd =
+      std::string("'") + SLAMSPH_BINARY + "' run '" + SLAMSPH_SOURCE_DIR +
+      "/tests/regression/golden/fsi_small.toml' --max-steps 400 --threads 2 --exact-threads" +
+      " --quiet --out '" + (root / "out").string() + "' > '" + (root / "log.txt").string() +
+      "' 2>&1";
   const int st = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(st)) << cmd;
   ASSERT_EQ(WEXITSTATUS(st), 0) << cmd;

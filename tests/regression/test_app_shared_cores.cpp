@@ -1,9 +1,11 @@
 // Issue 12: with both cores busy, a run with 2 threads was 7-20x slower than with 1 thread
-// (libgomp threads spinning at every barrier hold the core their partner needs). The binary
-// now makes waiting threads sleep after a bounded spin (core/parallel.h, ThreadPool). This test
-// loads the two CPUs the test may use with one busy process each, runs the same short case
-// with 1 and with 2 threads pinned to those CPUs, and requires 2 threads to take less than
-// 3x the time of 1 thread (before the fix: ~10x on this case; after: below 1x).
+// (libgomp threads spinning at every barrier hold the core their partner needs). Issue 13:
+// slamsph's own threads (core/parallel.cpp) sleep instead of spinning and a run's loops use
+// only the CPUs other programs leave free. This test loads the two CPUs the test may use
+// with one busy process each, runs the same short case with 1 and with 2 threads pinned to
+// those CPUs, and requires 2 threads to take less than 1.5x the time of 1 thread (libgomp
+// spinning: ~10x; libgomp passive: ~1.7-2.5x; sleeping at once but keeping both threads:
+// 1.4-1.9x, docs/validation.md §6 "Threads").
 #include <gtest/gtest.h>
 #include <sched.h>
 #include <signal.h>
@@ -99,7 +101,7 @@ TEST(SharedCores, TwoThreadsOnBusyCoresAreNotSlowerThanThreeTimesOneThread) {
   waitpid(b, nullptr, 0);
   fs::remove_all(dir);
   std::printf("busy cores: 1 thread %.2f s, 2 threads %.2f s (ratio %.2f)\n", t1, t2, t2 / t1);
-  EXPECT_LT(t2, 3.0 * t1) << "2 threads on busy cores collapse (threads spinning?)";
+  EXPECT_LT(t2, 1.5 * t1) << "2 threads on busy cores collapse (threads spinning? not adapting?)";
 }
 
 }  // namespace

@@ -167,8 +167,8 @@ TEST(AppThreads, BinaryWritesIdenticalForcesAndProbesFor1And2Threads) {
     const fs::path dir = root / std::to_string(t);
     std::ostringstream cmd;
     cmd << "'" << SLAMSPH_BINARY << "' run '" << src << "' --out '" << dir.string()
-        << "' --threads " << t << " --max-steps 40 --quiet > '" << (root / "log.txt").string()
-        << "' 2>&1";
+        << "' --exact-threads --threads " << t << " --max-steps 40 --quiet > '"
+        << (root / "log.txt").string() << "' 2>&1";
     const int st = std::system(cmd.str().c_str());
     ASSERT_TRUE(WIFEXITED(st) && WEXITSTATUS(st) == 0) << slurp(root / "log.txt");
     out[t - 1][0] = slurp(dir / "forces.csv");
