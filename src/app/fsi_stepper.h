@@ -175,6 +175,8 @@ class FsiStepper {
   long solid_substeps_ = 0;
   std::vector<long> limiter_steps_ = std::vector<long>(kStepLimiterCount, 0);  // per StepLimiter
   long leaked_ = 0;
+  // The contact entries of rigid_fixed bodies hold their gathered state (evaluate_rates).
+  bool fixed_gathered_ = false;
   std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
   Vec2 zone_momentum_;
   PhaseTimes times_;

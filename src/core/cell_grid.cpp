@@ -90,11 +90,38 @@ std::vector<std::uint32_t> CellGrid::row_offsets() const {
 void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double radius,
                         const Executor& exec, BandedPairs& out) {
   const std::size_t n = pts.size();
-  build_lists(
-      pts, pts, grid, radius, [](std::size_t i, std::uint32_t j) { return j > i; }, exec, out.half);
   const std::vector<std::uint32_t>& order = grid.cell_order();
   bool in_cell_order = order.size() == n && radius <= grid.cell_size();
   for (std::size_t i = 0; in_cell_order && i < n; ++i) in_cell_order = order[i] == i;
+  if (in_cell_order) {
+    // The same lists, in the same order, from the cells that can hold a later point
+    // (CellGrid::for_each_later_candidate): half the candidates of the 3x3 search.
+    const double r2 = radius * radius;
+    NeighbourList& h = out.half;
+    h.start.assign(n + 1, 0);
+    exec.for_each(n, [&](std::size_t i) {
+      std::uint32_t c = 0;
+      const Vec2 q = pts[i];
+      grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
+        if (norm2(q - pts[j]) < r2) ++c;
+      });
+      h.start[i + 1] = c;
+    });
+    for (std::size_t i = 0; i < n; ++i) h.start[i + 1] += h.start[i];
+    h.index.resize(h.start[n]);
+    exec.for_each(n, [&](std::size_t i) {
+      std::uint32_t* dst = h.index.data() + h.start[i];
+      std::uint32_t k = 0;
+      const Vec2 q = pts[i];
+      grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
+        if (norm2(q - pts[j]) < r2) dst[k++] = j;
+      });
+    });
+  } else {
+    build_lists(
+        pts, pts, grid, radius, [](std::size_t i, std::uint32_t j) { return j > i; }, exec,
+        out.half);
+  }
   out.band_start.clear();
   if (in_cell_order) {
     // One band per non-empty row of cells (row_offsets() starts at 0 and ends at n). Empty

@@ -36,6 +36,22 @@ class CellGrid {
     }
   }
 
+  // For point i of the binned set itself, when the set is in cell order (cell_order() is the
+  // identity): calls f(j) for every candidate of for_each_candidate(p_i) with j > i, in the
+  // same order. In cell order the row below holds only smaller indices and the own row only
+  // [i + 1, end of the cell to the right) of them, so about half the cells are visited.
+  template <class F>
+  void for_each_later_candidate(std::uint32_t i, Vec2 p, F&& f) const {
+    const int cx = cell_x(p.x), cy = cell_y(p.y);
+    const int x0 = cx > 0 ? cx - 1 : 0;
+    const int x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
+    const std::size_t row = static_cast<std::size_t>(cy) * nx_;
+    for (std::uint32_t k = i + 1, e = start_[row + x1 + 1]; k < e; ++k) f(sorted_[k]);
+    if (cy + 1 >= ny_) return;
+    const std::size_t up = row + nx_;
+    for (std::uint32_t k = start_[up + x0], e = start_[up + x1 + 1]; k < e; ++k) f(sorted_[k]);
+  }
+
   // Point indices in cell order (row-major by y, then x): a locality-friendly ordering.
   const std::vector<std::uint32_t>& cell_order() const { return sorted_; }
   // Offsets into cell_order() where each row of cells (constant y index) begins; ny + 1

@@ -8,6 +8,9 @@ Kernel::Kernel(KernelType type, double h) : type_(type), h_(h), inv_h_(1.0 / h) 
   const double pi = std::numbers::pi;
   // 2D normalisations: Wendland C2 7/(4 pi h^2); cubic B-spline 10/(7 pi h^2).
   norm_ = type == KernelType::WendlandC2 ? 7.0 / (4.0 * pi * h * h) : 10.0 / (7.0 * pi * h * h);
+  norm_h_ = norm_ * inv_h_;
+  norm_h2_ = norm_ * inv_h_ * inv_h_;
+  norm_h2_5_ = norm_ * inv_h_ * inv_h_ * (-5.0);
 }
 
 KernelType kernel_type_from_name(const std::string& name) {

@@ -58,12 +58,12 @@ class Kernel {
     if constexpr (T == KernelType::WendlandC2) {
       // Branch-free: zero beyond the support through the clamp.
       const double t = std::max(0.0, 1.0 - 0.5 * q);
-      return norm_ * inv_h_ * inv_h_ * (-5.0) * t * t * t;
+      return norm_h2_5_ * t * t * t;
     } else {
       if (q >= 2.0) return 0.0;
-      if (q < 1.0) return norm_ * inv_h_ * inv_h_ * (-3.0 + 2.25 * q);
+      if (q < 1.0) return norm_h2_ * (-3.0 + 2.25 * q);
       const double t = 2.0 - q;
-      return q > 0.0 ? norm_ * inv_h_ * (-0.75 * t * t) / r : 0.0;
+      return q > 0.0 ? norm_h_ * (-0.75 * t * t) / r : 0.0;
     }
   }
 
@@ -72,6 +72,11 @@ class Kernel {
   double h_ = 1.0;
   double inv_h_ = 1.0;
   double norm_ = 0.0;
+  // norm_ inv_h_, norm_ inv_h_ inv_h_ and norm_ inv_h_ inv_h_ (-5), multiplied in the order
+  // the formulas above read, so the values are those of the plain expressions. Stored
+  // because a pair loop cannot hoist them itself: they are reached only past its support
+  // test, and the compiler does not move floating-point operations out of a conditional path.
+  double norm_h_ = 0.0, norm_h2_ = 0.0, norm_h2_5_ = 0.0;
 };
 
 KernelType kernel_type_from_name(const std::string& name);  // throws std::invalid_argument

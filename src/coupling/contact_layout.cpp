@@ -97,10 +97,11 @@ void init_contact_particles(ContactParticles& contact, const ContactLayout& layo
 }
 
 void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
-                       const std::vector<SolidBody>& bodies) {
+                       const std::vector<SolidBody>& bodies, bool refresh_fixed) {
   std::vector<std::vector<int>> present(bodies.size());  // layers behind slot parents
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const SolidBody& body = bodies[b];
+    if (!refresh_fixed && body.kind == BodyKind::RigidFixed) continue;
     const std::size_t o = layout.offset[b];
     const bool moves = body.kind != BodyKind::RigidFixed;
     for (std::size_t i = 0; i < body.size(); ++i) {
@@ -143,6 +144,7 @@ void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
     const ContactGhost& gh = layout.ghosts[g];
     const std::size_t c = layout.first_ghost() + g;
     const SolidBody& body = bodies[gh.body];
+    if (!refresh_fixed && body.kind == BodyKind::RigidFixed) continue;
     const std::size_t parent = layout.offset[gh.body] + gh.spec.parent;
     const Vec2 n = contact.normal[parent];
     contact.anchor[c] = contact.x[parent];

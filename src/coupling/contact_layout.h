@@ -65,8 +65,11 @@ void init_contact_particles(ContactParticles& contact, const ContactLayout& layo
 // for (replan_around_failures), the current colour gradient (coupling/surface_normals.h). Ghosts
 // follow their parent along its normal, with their weight times its volume; slots at the depth and
 // weight the current configuration asks for. Failed particles are marked as debris.
+// refresh_fixed = false leaves the entries of rigid_fixed bodies and their ghosts as they are:
+// such a body never moves (advance_rigid keeps x and zeroes v and a), so once gathered after
+// a step they stay valid until the contact set is re-planned (FsiStepper).
 void gather_body_state(ContactParticles& contact, const ContactLayout& layout,
-                       const std::vector<SolidBody>& bodies);
+                       const std::vector<SolidBody>& bodies, bool refresh_fixed = true);
 
 // body.f_fluid = the contact force on each of its particles plus that of its ghosts.
 void scatter_contact_forces(const ContactParticles& contact, const ContactLayout& layout,

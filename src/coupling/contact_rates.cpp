@@ -6,11 +6,13 @@ namespace slamsph {
 
 namespace {
 
-ContactPairInput pair_input(const FluidParticles& f, std::size_t i, const ContactParticles& c,
-                            std::size_t s, const ContactParams& prm) {
+// Vi = m_i / rho_i, the fluid particle's volume (a gather over one fluid particle's
+// partners divides once, not once per pair: the same value).
+ContactPairInput pair_input(const FluidParticles& f, std::size_t i, double Vi,
+                            const ContactParticles& c, std::size_t s, const ContactParams& prm) {
   const Vec2 g_rel = prm.hydrostatic_correction ? prm.gravity - c.a[s] : Vec2{};
-  return {f.x[i], f.v[i],        f.rho[i], f.p[i], f.m[i] / f.rho[i], c.x[s],
-          c.v[s], c.v_noslip[s], c.rho[s], c.p[s], c.volume[s],       g_rel};
+  return {f.x[i], f.v[i],        f.rho[i], f.p[i], Vi,          c.x[s],
+          c.v[s], c.v_noslip[s], c.rho[s], c.p[s], c.volume[s], g_rel};
 }
 
 template <bool kViscous>
@@ -23,11 +25,12 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
     if (b == e) return;
     Vec2 force;
     double drho = 0.0;
+    const double Vi = f.m[i] / f.rho[i];
     for (std::uint32_t k = b; k < e; ++k) {
       const std::uint32_t s = fc.index[k];
       if (!c.wetted[s] || !c.faces(s, f.x[i])) continue;
       const ContactPairResult r =
-          contact_pair<kViscous>(pair_input(f, i, c, s, prm), kernel, prm.c0, prm.omega,
+          contact_pair<kViscous>(pair_input(f, i, Vi, c, s, prm), kernel, prm.c0, prm.omega,
                                  prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
       if (!r.active) continue;
       force += r.force + r.force_viscous;
@@ -47,9 +50,9 @@ void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList&
       for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
         const std::uint32_t i = cf.index[k];
         if (!c.faces(s, f.x[i])) continue;
-        const ContactPairResult r =
-            contact_pair<kViscous>(pair_input(f, i, c, s, prm), kernel, prm.c0, prm.omega,
-                                   prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
+        const ContactPairResult r = contact_pair<kViscous>(
+            pair_input(f, i, f.m[i] / f.rho[i], c, s, prm), kernel, prm.c0, prm.omega,
+            prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
         if (!r.active) continue;
         force -= r.force + r.force_viscous;
         visc -= r.force_viscous;

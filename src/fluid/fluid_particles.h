@@ -24,9 +24,10 @@ struct FluidParticles {
   std::vector<double> rho_half;
   std::vector<std::uint8_t> crossed;  // 1 once the particle was found inside a solid
   std::vector<double> volume;         // m/rho, refreshed by each rate pass (scratch)
+  std::vector<double> inv_rho;        // 1/rho, refreshed by each rate pass (scratch)
 
-  // The field list. v_half and rho_half live only inside a step and volume only inside a
-  // rate pass, so a checkpoint between steps does not need them.
+  // The field list. v_half and rho_half live only inside a step and volume and inv_rho only
+  // inside a rate pass, so a checkpoint between steps does not need them.
   template <class Self, class F>
   static void visit_fields(Self& s, F&& f) {
     f(FieldSpec{"position", "m", true, false}, s.x);  // the VTK points
@@ -41,6 +42,7 @@ struct FluidParticles {
     f(FieldSpec{"velocity_half_step", "m/s", false, false}, s.v_half);
     f(FieldSpec{"density_half_step", "kg/m^3", false, false}, s.rho_half);
     f(FieldSpec{"volume", "m^2", false, false}, s.volume);
+    f(FieldSpec{"inverse_density", "m^3/kg", false, false}, s.inv_rho);
   }
 
   std::size_t size() const { return x.size(); }

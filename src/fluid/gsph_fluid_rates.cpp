@@ -12,45 +12,54 @@ namespace {
 // The hot loop of the solver. solve_riemann() is written out with its divisions hoisted
 // (tests/unit/test_fluid_momentum.cpp checks it against the plain formulas through the
 // conservation and uniform-state tests; riemann_solver.h is the reference).
+// Every constant and array pointer is copied into a local of the band task: read through
+// the task's captures, the compiler has to reload them (and redo the kernel's constant
+// factor) after every store to acc[j] or drho[j], which may alias them as far as it knows.
+// 1/rho_j comes from a per-particle array filled with V = m/rho (the same division, once per
+// particle instead of once per pair), so the sums are bit-identical to the plain form.
 template <bool kViscous, KernelType kType, RatePass kPass>
 void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel_in,
                 const GsphParams& prm, const Executor& exec) {
-  const Kernel kernel = kernel_in;  // a local copy keeps its constants in registers
-  const double support2 = kernel.support() * kernel.support();
-  const double eta2 = 0.01 * kernel.h() * kernel.h();  // Morris regulariser
-  const double c0 = prm.c0, inv_c0 = 1.0 / prm.c0, omega = prm.omega;
-  const Vec2 g = prm.gravity;
-  const Vec2 g_static = prm.hydrostatic_correction ? g : Vec2{};  // riemann_solver.h
-  const Vec2* x = f.x.data();
-  const Vec2* v = f.v.data();
-  const double* rho = f.rho.data();
-  const double* p = f.p.data();
-  Vec2* acc = f.a.data();
-  double* drho = f.drho.data();  // holds sum_j V_j (v_i - v*) . grad W until the last pass
   constexpr bool kMomentum = kPass != RatePass::Continuity;
   constexpr bool kContinuity = kPass != RatePass::Momentum;
   exec.for_each(f.size(), [&](std::size_t i) {
     f.volume[i] = f.m[i] / f.rho[i];
-    if constexpr (kMomentum) acc[i] = Vec2{};
-    if constexpr (kContinuity) drho[i] = 0.0;
+    f.inv_rho[i] = 1.0 / f.rho[i];
+    if constexpr (kMomentum) f.a[i] = Vec2{};
+    if constexpr (kContinuity) f.drho[i] = 0.0;  // sum_j V_j (v_i - v*) . grad W until the end
   });
-  const double* V = f.volume.data();
-  const NeighbourList& half = pairs.half;
   // Each pair once (j > i); the task of band b writes to bands b and b + 1 only.
-  exec.for_alternating(pairs.bands(), [&](std::size_t band) {
-    for (std::uint32_t i = pairs.band_start[band]; i < pairs.band_start[band + 1]; ++i) {
+  exec.for_alternating(pairs.bands(), [&f, &pairs, &kernel_in, &prm](std::size_t band) {
+    const Kernel kernel = kernel_in;
+    const double support2 = kernel.support() * kernel.support();
+    const double eta2 = 0.01 * kernel.h() * kernel.h();  // Morris regulariser
+    const double c0 = prm.c0, inv_c0 = 1.0 / prm.c0, omega = prm.omega, nu = prm.viscosity;
+    const Vec2 g_static = prm.hydrostatic_correction ? prm.gravity : Vec2{};  // riemann_solver.h
+    const Vec2* const x = f.x.data();
+    const Vec2* const v = f.v.data();
+    const double* const rho = f.rho.data();
+    const double* const inv_rho = f.inv_rho.data();
+    const double* const p = f.p.data();
+    const double* const V = f.volume.data();
+    Vec2* const acc = f.a.data();
+    double* const drho = f.drho.data();
+    const std::uint32_t* const start = pairs.half.start.data();
+    const std::uint32_t* const index = pairs.half.index.data();
+    const std::uint32_t end_i = pairs.band_start[band + 1];
+    for (std::uint32_t i = pairs.band_start[band]; i < end_i; ++i) {
       const Vec2 xi = x[i], vi = v[i];
-      const double rhoi = rho[i], pi = p[i], inv_rhoi = 1.0 / rhoi, Vi = V[i];
+      const double rhoi = rho[i], pi = p[i], inv_rhoi = inv_rho[i], Vi = V[i];
       Vec2 acc_i;
       double drho_i = 0.0;
-      for (std::uint32_t k = half.start[i]; k < half.start[i + 1]; ++k) {
-        const std::uint32_t j = half.index[k];
+      const std::uint32_t end_k = start[i + 1];
+      for (std::uint32_t k = start[i]; k < end_k; ++k) {
+        const std::uint32_t j = index[k];
         const Vec2 dx = xi - x[j];
         const double r2 = norm2(dx);
         if (r2 >= support2 || r2 == 0.0) continue;  // the lists carry a skin
         const double r = std::sqrt(r2), inv_r = 1.0 / r;
         const double dwr = kernel.dw_over_r_as<kType>(r);  // grad_i W_ij = dwr * dx
-        const double rhoj = rho[j], Vj = V[j], inv_rhoj = 1.0 / rhoj;
+        const double rhoj = rho[j], Vj = V[j];
         // Riemann problem along e_ij = -dx / r (spec §2; riemann_solver.h). Seen from j
         // (left and right swapped, axis reversed) U* changes sign and p* is the same.
         const double uL = -dot(vi, dx) * inv_r, uR = -dot(v[j], dx) * inv_r;
@@ -72,23 +81,24 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
         if constexpr (kMomentum) {
           const double fp = -2.0 * ps * dwr;
           acc_i += (Vj * inv_rhoi * fp) * dx;
-          acc[j] -= (Vi * inv_rhoj * fp) * dx;
+          acc[j] -= (Vi * inv_rho[j] * fp) * dx;
         }
         if constexpr (kViscous && kMomentum) {
           // Morris et al. 1997: sum m_j (mu_i + mu_j)/(rho_i rho_j) (r.gradW)/(r^2+eta^2) v_ij
-          const double coef = prm.viscosity * (rhoi + rhoj) * dwr * r2 / (r2 + eta2);
+          const double coef = nu * (rhoi + rhoj) * dwr * r2 / (r2 + eta2);
           const Vec2 vij = vi - v[j];
           acc_i += (coef * Vj * inv_rhoi) * vij;
-          acc[j] -= (coef * Vi * inv_rhoj) * vij;
+          acc[j] -= (coef * Vi * inv_rho[j]) * vij;
         }
       }
       if constexpr (kMomentum) acc[i] += acc_i;
       if constexpr (kContinuity) drho[i] += drho_i;
     }
   });
+  const Vec2 g = prm.gravity;
   exec.for_each(f.size(), [&](std::size_t i) {
-    if constexpr (kContinuity) drho[i] *= 2.0 * rho[i];
-    if constexpr (kMomentum) acc[i] += g;
+    if constexpr (kContinuity) f.drho[i] *= 2.0 * f.rho[i];
+    if constexpr (kMomentum) f.a[i] += g;
   });
 }
 
