@@ -20,7 +20,9 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
               const Kernel& kernel, const ContactParams& prm, const Executor& exec, RatePass pass) {
   const bool momentum = pass != RatePass::Continuity;
   const bool continuity = pass != RatePass::Momentum;
-  exec.for_each(f.size(), [&](std::size_t i) {
+  // Split by pairs: the fluid in contact is a few rows of cells next to the walls, which
+  // equal shares of the (cell-ordered) fluid would give to one thread.
+  exec.for_each_weighted(f.size(), fc.start.data(), [&](std::size_t i) {
     const std::uint32_t b = fc.start[i], e = fc.start[i + 1];
     if (b == e) return;
     Vec2 force;
@@ -44,7 +46,8 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
 template <bool kViscous>
 void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
               const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
-  exec.for_each(c.size(), [&](std::size_t s) {
+  // Split by pairs: the wetted contact particles are one stretch of each body's surface.
+  exec.for_each_weighted(c.size(), cf.start.data(), [&](std::size_t s) {
     Vec2 force, visc;
     if (c.wetted[s]) {
       for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {

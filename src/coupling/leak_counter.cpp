@@ -7,7 +7,8 @@ namespace slamsph {
 
 long update_leak_flags(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
                        const Executor& exec) {
-  exec.for_each(f.size(), [&](std::size_t i) {
+  // Split by pairs: only the fluid next to a surface has any (Executor::for_each_weighted).
+  exec.for_each_weighted(f.size(), fc.start.data(), [&](std::size_t i) {
     if (f.crossed[i]) return;
     double best = std::numeric_limits<double>::max();
     std::uint32_t nearest = 0;

@@ -7,7 +7,8 @@ namespace slamsph {
 void compute_virtual_state(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
                            const Kernel& kernel, const TaitEos& eos, Vec2 gravity,
                            const Executor& exec) {
-  exec.for_each(c.size(), [&](std::size_t s) {
+  // Split by pairs (Executor::for_each_weighted): the wetted stretch of a surface is short.
+  exec.for_each_weighted(c.size(), cf.start.data(), [&](std::size_t s) {
     double sum_w = 0.0, sum_pw = 0.0;
     Vec2 sum_rrw, sum_vw;
     const Vec2 xs = c.x[s];

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <stdexcept>
@@ -53,6 +54,35 @@ TEST(Executor, LoopsGiveTheSameAnswerOnAnyThreadCount) {
   EXPECT_EQ(Executor(2).max_of(
                 0, [](std::size_t) { return 1.0; }, -5.0),
             -5.0);
+}
+
+// for_each_weighted visits every item once, and each thread's share costs about the same
+// when the work clusters at one end (here all pairs in the first tenth of the items, as the
+// fluid next to a tank's bottom wall in cell order).
+TEST(Executor, WeightedLoopsSplitTheWorkNotTheItems) {
+  const std::size_t n = 20000;
+  std::vector<std::uint32_t> work(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) work[i + 1] = work[i] + (i < n / 10 ? 40u : 0u);
+  for (int threads : {1, 2, 3}) {
+    const Executor exec(threads);
+    std::vector<int> hits(n, 0);
+    std::vector<std::thread::id> who(n);
+    exec.for_each_weighted(n, work.data(), [&](std::size_t i) {
+      ++hits[i];
+      who[i] = std::this_thread::get_id();
+    });
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hits[i], 1) << i;
+    // Shares are contiguous: cut the items where the thread changes and weigh each part.
+    std::vector<std::uint64_t> parts{0};
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i > 0 && who[i] != who[i - 1]) parts.push_back(0);
+      parts.back() += work[i + 1] - work[i] + 1;
+    }
+    ASSERT_EQ(parts.size(), static_cast<std::size_t>(threads)) << threads;
+    const double total = static_cast<double>(work[n] + n);
+    for (const std::uint64_t p : parts)
+      EXPECT_NEAR(static_cast<double>(p), total / threads, 41.0) << threads;
+  }
 }
 
 // Pass k of a team reads what every thread wrote in pass k − 1 (a shifted neighbour outside
