@@ -16,6 +16,7 @@
 #include "app/case_builder.h"
 #include "app/case_checks.h"
 #include "app/checkpoint.h"
+#include "app/end_time_override.h"
 #include "app/recorder.h"
 #include "app/setup_warnings.h"
 #include "app/snapshots.h"
@@ -55,8 +56,8 @@ Simulation::Simulation(CaseConfig config, const RunOptions& options)
       opt_(options),
       exec_(options.threads > 0 ? options.threads : Executor::default_threads(),
             options.adapt_threads ? Executor::Load::Adapt : Executor::Load::Fixed) {
-  if (opt_.end_time) cfg_.numerics.end_time = *opt_.end_time;
-  warnings_ = setup_warnings(cfg_);
+  if (opt_.end_time) warnings_ = override_end_time(cfg_, *opt_.end_time);
+  for (std::string& w : setup_warnings(cfg_)) warnings_.push_back(std::move(w));
   check_case_size(cfg_, opt_.max_particles);
   BuiltCase built = build_case(cfg_);
   check_built_case(cfg_, built.system);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "app/end_time_override.h"
 #include "app/output_folder.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
@@ -75,7 +76,8 @@ std::string study_label(std::size_t index, const std::vector<std::string>& overr
 CaseConfig study_case(const StudyOptions& opt, const StudyVariant& v) {
   CaseConfig cfg = load_case(opt.case_path, v.overrides);
   if (v.dx) rescale_resolution(cfg, *v.dx);
-  if (opt.end_time) cfg.numerics.end_time = *opt.end_time;
+  // The run's own --end-time (RunOptions) would do it too; the study's checks need it here.
+  if (opt.end_time) override_end_time(cfg, *opt.end_time);
   const BodyConfig* body = nullptr;
   for (const BodyConfig& b : cfg.bodies)
     if ((opt.body.empty() && b.kind != "rigid_fixed") || b.name == opt.body) {

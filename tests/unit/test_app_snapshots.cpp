@@ -127,5 +127,29 @@ TEST(AppSnapshots, StrainPressurePngsAndSkinProfile) {
   fs::remove_all(dir);
 }
 
+// A run shortened with --end-time before a listed snapshot drops that snapshot with a
+// warning, writes the ones before it and leaves a case.resolved.toml that reads back (it
+// used to complete and then fail, exit 2, when the plot step re-read its resolved case).
+TEST(AppSnapshots, EndTimeBeforeASnapshotDropsItWithAWarning) {
+  const fs::path dir = fs::temp_directory_path() / "slamsph_snapshots_end_time_test";
+  fs::remove_all(dir);
+  RunOptions opt = silent_options(1);
+  opt.write_output = true;
+  opt.out_dir = dir.string();
+  opt.end_time = 0.004;
+  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), opt);
+  ASSERT_EQ(sim.warnings().size(), 1u);
+  EXPECT_NE(sim.warnings()[0].find("output.snapshots at 0.006 s"), std::string::npos)
+      << sim.warnings()[0];
+  ASSERT_EQ(sim.run(), 0);
+  EXPECT_TRUE(fs::exists(dir / "snapshots" / "snapshot_01.csv"));
+  EXPECT_FALSE(fs::exists(dir / "snapshots" / "snapshot_02.csv"));
+  const CaseConfig back = load_case((dir / "case.resolved.toml").string());
+  EXPECT_EQ(back.numerics.end_time, 0.004);
+  EXPECT_EQ(back.output.snapshots, std::vector<double>{0.003});
+  EXPECT_NE(slurp(dir / "summary.json").find("output.snapshots at 0.006 s"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace slamsph
