@@ -43,32 +43,38 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
 
 namespace {
 
-// CSR lists of the points j within `radius` of each query i for which accept(i, j) holds.
-// Pass 1 counts, pass 2 fills; both gather-style over the queries.
-template <class Accept>
-void build_lists(std::span<const Vec2> queries, std::span<const Vec2> pts, const CellGrid& grid,
-                 double radius, Accept accept, const Executor& exec, NeighbourList& out) {
-  const std::size_t n = queries.size();
-  const double r2 = radius * radius;
+// CSR lists over n queries: visit(i, emit) calls emit(j) for every neighbour j of query i,
+// in list order. Pass 1 counts, pass 2 fills; both gather-style over the queries.
+template <class Visit>
+void csr_lists(std::size_t n, Visit visit, const Executor& exec, NeighbourList& out) {
   out.start.assign(n + 1, 0);
   exec.for_each(n, [&](std::size_t i) {
     std::uint32_t c = 0;
-    const Vec2 q = queries[i];
-    grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (accept(i, j) && norm2(q - pts[j]) < r2) ++c;
-    });
+    visit(i, [&c](std::uint32_t) { ++c; });
     out.start[i + 1] = c;
   });
   for (std::size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
   out.index.resize(out.start[n]);
   exec.for_each(n, [&](std::size_t i) {
     std::uint32_t* dst = out.index.data() + out.start[i];
-    std::uint32_t k = 0;
-    const Vec2 q = queries[i];
-    grid.for_each_candidate(q, [&](std::uint32_t j) {
-      if (accept(i, j) && norm2(q - pts[j]) < r2) dst[k++] = j;
-    });
+    visit(i, [&dst](std::uint32_t j) { *dst++ = j; });
   });
+}
+
+// The points j within `radius` of each query i for which accept(i, j) holds.
+template <class Accept>
+void build_lists(std::span<const Vec2> queries, std::span<const Vec2> pts, const CellGrid& grid,
+                 double radius, Accept accept, const Executor& exec, NeighbourList& out) {
+  const double r2 = radius * radius;
+  csr_lists(
+      queries.size(),
+      [&](std::size_t i, auto&& emit) {
+        const Vec2 q = queries[i];
+        grid.for_each_candidate(q, [&](std::uint32_t j) {
+          if (accept(i, j) && norm2(q - pts[j]) < r2) emit(j);
+        });
+      },
+      exec, out);
 }
 
 }  // namespace
@@ -97,26 +103,15 @@ void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double 
     // The same lists, in the same order, from the cells that can hold a later point
     // (CellGrid::for_each_later_candidate): half the candidates of the 3x3 search.
     const double r2 = radius * radius;
-    NeighbourList& h = out.half;
-    h.start.assign(n + 1, 0);
-    exec.for_each(n, [&](std::size_t i) {
-      std::uint32_t c = 0;
-      const Vec2 q = pts[i];
-      grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
-        if (norm2(q - pts[j]) < r2) ++c;
-      });
-      h.start[i + 1] = c;
-    });
-    for (std::size_t i = 0; i < n; ++i) h.start[i + 1] += h.start[i];
-    h.index.resize(h.start[n]);
-    exec.for_each(n, [&](std::size_t i) {
-      std::uint32_t* dst = h.index.data() + h.start[i];
-      std::uint32_t k = 0;
-      const Vec2 q = pts[i];
-      grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
-        if (norm2(q - pts[j]) < r2) dst[k++] = j;
-      });
-    });
+    csr_lists(
+        n,
+        [&](std::size_t i, auto&& emit) {
+          const Vec2 q = pts[i];
+          grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
+            if (norm2(q - pts[j]) < r2) emit(j);
+          });
+        },
+        exec, out.half);
   } else {
     build_lists(
         pts, pts, grid, radius, [](std::size_t i, std::uint32_t j) { return j > i; }, exec,
