@@ -27,7 +27,7 @@
 //   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads)
 //   solid   = Σ_elastic N_b (k_law c_sub(N_b) n_b + c_call) (n_b sub-steps per fluid step;
 //             c_call the per-call set-up of the sub-step loop, solid/elastic_substep.cpp;
-//             c_sub log-linear in N_b between 10 000 and 60 000 particles, cache again)
+//             c_sub log-linear in N_b between 25 000 and 60 000 particles, cache again)
 // The wall time on T threads divides the water, lists and contact phases by the measured
 // two-thread speed-up S_f(N_water) and each body's sub-steps by S_s(N_b) when its team has
 // two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise. This
@@ -74,7 +74,12 @@ struct CostConstants {
   double fluid_n_small = 3200, fluid_n_large = 320000;
   // Two-thread speed-up of a body's sub-steps whose team has two threads: likewise.
   double solid_speedup_small = 1.35, solid_speedup_large = 1.64;
-  double solid_n_small = 10000, solid_n_large = 60000;
+  // The solid cost and speed-up hold their small-body values up to 25 000 particles: the
+  // 6-layer skin (22 506 particles, session 12, docs/validation.md §6) ran its sub-steps at
+  // 60 ns per particle-sub-step on 1 thread (94 ns before the machine factor, against the
+  // fitted 100) and 1.32x faster on 2 threads; interpolating from 10 000 had predicted
+  // 138 ns and 1.47x (the 5 ms slice +59 %).
+  double solid_n_small = 25000, solid_n_large = 60000;
 };
 
 struct BodyCost {
