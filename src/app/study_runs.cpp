@@ -8,7 +8,6 @@
 #include <fstream>
 #include <system_error>
 
-#include "app/end_time_override.h"
 #include "app/output_folder.h"
 #include "app/plot_command.h"
 #include "app/run_options.h"
@@ -76,8 +75,6 @@ std::string study_label(std::size_t index, const std::vector<std::string>& overr
 CaseConfig study_case(const StudyOptions& opt, const StudyVariant& v) {
   CaseConfig cfg = load_case(opt.case_path, v.overrides);
   if (v.dx) rescale_resolution(cfg, *v.dx);
-  // The run's own --end-time (RunOptions) would do it too; the study's checks need it here.
-  if (opt.end_time) override_end_time(cfg, *opt.end_time);
   const BodyConfig* body = nullptr;
   for (const BodyConfig& b : cfg.bodies)
     if ((opt.body.empty() && b.kind != "rigid_fixed") || b.name == opt.body) {
@@ -126,6 +123,7 @@ void validate_study(const StudyOptions& opt, const std::vector<StudyVariant>& va
     try {
       RunOptions check = silent_options(1);
       check.max_particles = opt.max_particles;
+      check.end_time = opt.end_time;  // applied by Simulation (app/end_time_override.h)
       Simulation sim(study_case(opt, v), check);
       OutputFolder::check_free(opt.out_dir + "/" + v.label, opt.overwrite);
     } catch (const InputError& e) {
@@ -143,6 +141,7 @@ std::vector<RunMetrics> run_study(const StudyOptions& opt,
     ro.threads = opt.threads;
     ro.quiet = opt.quiet;
     ro.max_particles = opt.max_particles;
+    ro.end_time = opt.end_time;
     ro.overwrite = opt.overwrite;
     ro.out_dir = opt.out_dir + "/" + v.label;
     if (!opt.quiet) std::fprintf(stderr, "[%zu/%zu] %s\n", k + 1, variants.size(), v.label.c_str());
