@@ -121,8 +121,8 @@ void ring_substeps(benchmark::State& st, bool johnson_cook) {
       const std::size_t j = b.topology.pairs.index[k];
       band = std::max(band, j > i ? j - i : i - j);
     }
-  st.counters["pairs"] = static_cast<double>(b.topology.pairs.index.size()) /
-                         static_cast<double>(b.size());
+  st.counters["pairs"] =
+      static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
   st.counters["band"] = static_cast<double>(band);
 }
 

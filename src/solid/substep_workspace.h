@@ -12,16 +12,15 @@
 namespace slamsph {
 
 // Reference constants of pair k = (i, j) read by pass 1 (F, Ḟ, hourglass moment, viscous
-// terms), in one record so that the pass streams one array.
+// terms), in one record so that the pass streams one array; j comes from the topology's
+// index. 48 bytes: the pair smoothing length and density of the viscous term are formed from
+// the per-particle h and ρ0 of i and j (j is near i in the stored order, so in cache), not
+// stored per pair.
 struct SubstepPairRef {
   Vec2 g;                 // g_ij = topology.grad0[k] [1/m]
   Vec2 X;                 // X_j − X_i [m]
   double kappa;           // hourglass pair stiffness κ_ij [N/m^3·m^2]
   double viscous_weight;  // |c_ij| of the artificial viscosity [m]
-  double h;               // symmetric smoothing length (h_i + h_j)/2 [m]
-  double rho0;            // (ρ0_i + ρ0_j)/2 [kg/m^3]
-  std::uint32_t j;
-  std::uint32_t reverse;  // position of (j, i)
 };
 // Those read by pass 2 (forces).
 struct SubstepPairRev {
@@ -29,16 +28,18 @@ struct SubstepPairRev {
   std::uint32_t j;
   std::uint32_t reverse;
 };
-// Viscous pair term of the current sub-step: force on i from j (−f of the reverse pair) and
-// the heating rate of each particle from the pair [W/m].
-struct SubstepViscous {
-  Vec2 f;
-  double q = 0.0;
-};
 // Per particle, gathered by the neighbours in pass 2: V0 P (the stress of the TL pair force)
 // and the hourglass moment G, each by columns (c0 = (xx, yx), c1 = (xy, yy)).
 struct SubstepParticleMats {
   Vec2 vp_c0, vp_c1, g_c0, g_c1;
+};
+
+// Per particle, the powers of the energy bookkeeping of one sub-step, written in pass 2 and
+// summed in particle order by the team's first thread during the next pass 1 (the forces and
+// velocities they come from are overwritten meanwhile) [W/m]: f_av·v, f_hg·v, f_ext·v½ and
+// for a clamped particle (f_int + f_ext)·v_clamp.
+struct SubstepPower {
+  double viscous, hourglass, external, clamp;
 };
 
 struct SubstepWorkspace {
@@ -48,32 +49,31 @@ struct SubstepWorkspace {
   std::vector<SubstepPairRef> ref;
   std::vector<SubstepPairRev> rev;
   // Per pair, of the current sub-step.
-  std::vector<Vec2> keps;               // κ_ij ε_ij (hourglass)
-  std::vector<SubstepViscous> viscous;  // viscous pair terms
+  std::vector<Vec2> keps;  // κ_ij ε_ij (hourglass)
   // Per particle.
-  std::vector<std::uint32_t> upper;       // first k of i's row with j > i (rows are sorted)
   std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
+  std::vector<SubstepPower> power;        // of the sub-step just completed
   std::vector<Vec2> vhalf;                // half-step velocity (two buffers, swapped)
   std::vector<Vec2> vhalf_next;
-  std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
+  std::vector<Vec2> x_next;  // positions after the next drift (swapped with body.x)
+  // After an Eulerian switch only (pass 2 adds the Eulerian pair heat before the energy update):
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
+  std::vector<double> heat;          // viscous heating of the TL pairs [W/m]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
   void resize(std::size_t particles, std::size_t pairs) {
     ref.resize(pairs);
     rev.resize(pairs);
     keps.resize(pairs);
-    viscous.resize(pairs);
-    upper.resize(particles);
     gsum.resize(particles);
     mats.resize(particles);
     fext.resize(particles);
+    power.resize(particles);
     vhalf.resize(particles);
     vhalf_next.resize(particles);
     x_next.resize(particles);
-    stress_power.resize(particles);
   }
 };
 
