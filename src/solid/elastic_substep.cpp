@@ -27,8 +27,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   w.resize(n, topo.pairs.index.size());
   if constexpr (kEulerian) {
     w.P_kin.resize(n);
-    w.stress_power.resize(n);
-    w.heat.resize(n);
     body.eulerian.stress_map.assign(n, Mat2{});  // intact particles keep 0
   }
   body.f_av.resize(n);
@@ -90,6 +88,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     SubstepPairRef* const ref = w.ref.data();
     SubstepPairRev* const rev = w.rev.data();
     Vec2* const keps_k = w.keps.data();
+    SubstepViscous* const visc = w.viscous.data();
+    const std::uint32_t* const upper = w.upper.data();
+    double* const stress_power = w.stress_power.data();
     SubstepParticleMats* const mats = w.mats.data();
     // Raw pointers: the compiler then keeps them in registers across the law's call.
     Mat2* const Fb = body.F.data();
@@ -111,8 +112,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     const auto [b, e] = team.share(n);
     for (std::size_t i = b; i < e; ++i) {
       Vec2 gs;
+      w.upper[i] = start[i + 1];
       for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
         const std::uint32_t j = index[k];
+        if (j > i && w.upper[i] == start[i + 1]) w.upper[i] = k;
         SubstepPairRef& r = ref[k];
         r.g = grad0[k];
         r.X = body.X[j] - body.X[i];
@@ -141,10 +144,14 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
         // its F comes from its current neighbours.
         const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
-        const std::uint32_t k0 = start[i], k1 = start[i + 1];
-        v2d fav{0.0, 0.0};
-        double heat = 0.0;
-        for (std::uint32_t k = k0; k < k1; ++k) {
+        const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
+        for (std::uint32_t k = k0; k < ku; ++k) {
+          const SubstepPairRef& r = ref[k];
+          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
+          simd::add_outer(Fc, simd::load(x[index[k]]) - xi, gx, gy);
+          simd::add_outer(Fdc, simd::load(vh[index[k]]) - vi, gx, gy);
+        }
+        for (std::uint32_t k = ku; k < k1; ++k) {
           const SubstepPairRef& r = ref[k];
           const std::uint32_t j = index[k];
           const v2d xj = simd::load(x[j]), vj = simd::load(vh[j]);
@@ -152,23 +159,23 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           simd::add_outer(Fc, xj - xi, gx, gy);
           simd::add_outer(Fdc, vj - vi, gx, gy);
           if constexpr (kViscous) {
-            // viscous_force_on's pair term (artificial_viscosity.h, spec §3 Monaghan Π),
-            // in CSR order as there, from each side of the pair: no per-pair store, and the
-            // sums are those of viscous_force_on bit for bit (x_ji = −x_ij and v_ji = −v_ij
-            // exactly, Π, h, ρ0 and |c| symmetric, so j's term is the exact negative of i's
-            // and the heat the same number). A pair with Π = 0 adds nothing (the sums start
-            // at +0, so a signed zero would not change them either).
+            // viscous_force_on's pair term for i; for j it is the exact negative (x_ji =
+            // −x_ij and v_ji = −v_ij bit for bit, Π, h, ρ0 and |c| symmetric), the heat the
+            // same.
             Vec2 xij, vij;
             simd::store(xij, xi - xj);
             simd::store(vij, vi - vj);
             const double pi = monaghan_pi(vij, xij, 0.5 * (hp[i] + hp[j]),
                                           0.5 * (rho0[i] + rho0[j]), c, av_alpha, av_beta);
+            Vec2 f;
+            double q = 0.0;
             if (pi != 0.0) {
               const double s = pi * r.viscous_weight / norm(xij);
-              Vec2 f = s * xij;
-              fav += simd::load(f);
-              heat += -0.5 * s * dot(xij, vij);
+              f = s * xij;
+              q = -0.5 * s * dot(xij, vij);
             }
+            visc[k] = {f, q};
+            visc[reverse[k]] = {-f, q};
           }
         }
         const Mat2 F = simd::mat(Fc);
@@ -193,17 +200,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         Pb[i] = P;
         if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
         if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
-        // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3), plus the viscous
-        // heating per unit mass: the internal energy of the sub-step is complete here, unless
-        // an Eulerian switch adds pair heat in pass 2.
-        const double sp = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
-        simd::store(f_av[i], fav);
-        if constexpr (eulerian) {
-          w.stress_power[i] = sp;
-          w.heat[i] = heat;
-        } else {
-          energy[i] += h * (sp + heat / m[i]);
-        }
+        // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
+        stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
         SubstepParticleMats& mi = mats[i];
         // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
         const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
@@ -226,19 +224,24 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       }
       if (team.leader() && step > 0) account();  // the previous sub-step's
       team.barrier();
-      // Pass 2: forces (stress_force_on and hourglass_force_on in one loop over i's pairs,
-      // each in its own accumulator; the viscous force from pass 1), second half kick; next
+      // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
+      // over i's pairs, each in its own accumulator), second half kick, internal energy; next
       // kick and drift. The pair terms of i's own side, V0_i P_i g_ij and G_i g_ij, are
       // summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum, per call): the same forces
       // at a different rounding (tests/unit/test_solid_substep.cpp).
       const bool more = step + 1 < steps;
       for (std::size_t i = b; i < e; ++i) {
-        v2d fs{0.0, 0.0}, grad{0.0, 0.0};
+        v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
+        double heat = 0.0;
         for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
           const SubstepPairRev& r = rev[k];
           const SubstepParticleMats& mj = mats[r.j];
           const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
           fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
+          if constexpr (kViscous) {
+            fav += simd::load(visc[k].f);
+            heat += visc[k].q;
+          }
           if constexpr (kHourglass) {
             grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
             grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
@@ -246,20 +249,18 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         }
         const SubstepParticleMats& mi = mats[i];
         const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
-        Vec2 fsv, favv = f_av[i], fhg;
+        Vec2 fsv, favv, fhg;
+        simd::store(favv, fav);
         simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
         if constexpr (kHourglass)
           simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
         if constexpr (eulerian) {
           Vec2 fse, fve;
-          double heat = w.heat[i];
           eulerian_force_on(body, x, vh, body.eulerian.stress_map, i, fse, fve, heat);
           fsv += fse;
           favv += fve;
-          f_av[i] = favv;
-          energy[i] += h * (w.stress_power[i] + heat / m[i]);
         }
-        f_hg[i] = fhg;
+        energy[i] += h * (stress_power[i] + heat / m[i]);
         // Forces, acceleration and velocity are body state only at the end of the call (and
         // read by the Eulerian operators): in between they live in registers and w.power.
         const Vec2 fi = fsv + favv + fhg;
@@ -268,6 +269,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         w.power[i] = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
                       clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
         if (eulerian || !more) {
+          f_av[i] = favv;
           f_hg[i] = fhg;
           f_int[i] = fi;
           a[i] = ai;

@@ -28,6 +28,12 @@ struct SubstepPairRev {
   std::uint32_t j;
   std::uint32_t reverse;
 };
+// Viscous pair term of the current sub-step: force on i from j (−f of the reverse pair) and
+// the heating rate of each particle from the pair [W/m].
+struct SubstepViscous {
+  Vec2 f;
+  double q = 0.0;
+};
 // Per particle, gathered by the neighbours in pass 2: V0 P (the stress of the TL pair force)
 // and the hourglass moment G, each by columns (c0 = (xx, yx), c1 = (xy, yy)).
 struct SubstepParticleMats {
@@ -49,24 +55,27 @@ struct SubstepWorkspace {
   std::vector<SubstepPairRef> ref;
   std::vector<SubstepPairRev> rev;
   // Per pair, of the current sub-step.
-  std::vector<Vec2> keps;  // κ_ij ε_ij (hourglass)
+  std::vector<Vec2> keps;               // κ_ij ε_ij (hourglass)
+  std::vector<SubstepViscous> viscous;  // viscous pair terms
   // Per particle.
+  std::vector<std::uint32_t> upper;       // first k of i's row with j > i (rows are sorted)
   std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
   std::vector<SubstepPower> power;        // of the sub-step just completed
   std::vector<Vec2> vhalf;                // half-step velocity (two buffers, swapped)
   std::vector<Vec2> vhalf_next;
-  std::vector<Vec2> x_next;  // positions after the next drift (swapped with body.x)
-  // After an Eulerian switch only (pass 2 adds the Eulerian pair heat before the energy update):
+  std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
-  std::vector<double> heat;          // viscous heating of the TL pairs [W/m]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
   void resize(std::size_t particles, std::size_t pairs) {
     ref.resize(pairs);
     rev.resize(pairs);
     keps.resize(pairs);
+    viscous.resize(pairs);
+    upper.resize(particles);
+    stress_power.resize(particles);
     gsum.resize(particles);
     mats.resize(particles);
     fext.resize(particles);
