@@ -26,6 +26,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   SubstepWorkspace& w = body.substep;
   w.resize(n, topo.pairs.index.size());
   if constexpr (kEulerian) {
+    w.vhalf_next.resize(n);
+    w.x_next.resize(n);
     w.P_kin.resize(n);
     body.eulerian.stress_map.assign(n, Mat2{});  // intact particles keep 0
   }

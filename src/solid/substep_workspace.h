@@ -63,9 +63,11 @@ struct SubstepWorkspace {
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
   std::vector<SubstepPower> power;        // of the sub-step just completed
-  std::vector<Vec2> vhalf;                // half-step velocity (two buffers, swapped)
+  std::vector<Vec2> vhalf;                // half-step velocity
+  // With an Eulerian switch only (otherwise updated in place): v½ and x after the next kick
+  // and drift, swapped with vhalf and body.x after pass 2.
   std::vector<Vec2> vhalf_next;
-  std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
+  std::vector<Vec2> x_next;
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
@@ -81,8 +83,6 @@ struct SubstepWorkspace {
     fext.resize(particles);
     power.resize(particles);
     vhalf.resize(particles);
-    vhalf_next.resize(particles);
-    x_next.resize(particles);
   }
 };
 
