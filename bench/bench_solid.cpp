@@ -19,6 +19,7 @@
 //   particle-step = Ir / (particles x sub-steps)).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -113,6 +114,16 @@ void ring_substeps(benchmark::State& st, bool johnson_cook) {
   st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
   st.counters["particles"] = static_cast<double>(b.size());
   st.counters["substeps"] = static_cast<double>(substeps);
+  // Pairs per particle and the largest |j - i| of a pair (the band of the stored order).
+  std::size_t band = 0;
+  for (std::size_t i = 0; i < b.size(); ++i)
+    for (std::uint32_t k = b.topology.pairs.start[i]; k < b.topology.pairs.start[i + 1]; ++k) {
+      const std::size_t j = b.topology.pairs.index[k];
+      band = std::max(band, j > i ? j - i : i - j);
+    }
+  st.counters["pairs"] =
+      static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
+  st.counters["band"] = static_cast<double>(band);
 }
 
 void BM_RingSubsteps(benchmark::State& st) {

@@ -26,6 +26,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   SubstepWorkspace& w = body.substep;
   w.resize(n, topo.pairs.index.size());
   if constexpr (kEulerian) {
+    w.vhalf_next.resize(n);
+    w.x_next.resize(n);
     w.P_kin.resize(n);
     body.eulerian.stress_map.assign(n, Mat2{});  // intact particles keep 0
   }
@@ -41,32 +43,35 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const std::uint32_t* const index = topo.pairs.index.data();
   const std::uint32_t* const reverse = topo.pair_reverse.data();
   const Vec2* const grad0 = topo.grad0.data();
-  // Work of the sub-step whose half-step velocities are vh (spec §3 energy bookkeeping):
-  // force at level n+1 times the synchronised velocity, external force over the drift.
-  // A moving clamp's reaction on its particle is −(f_int + f_ext) (the particle does not
-  // accelerate); its power at the clamp's constant velocity is the clamps' work.
-  auto account = [&](std::span<const Vec2> vh) {
+  // Work of the sub-step just completed (spec §3 energy bookkeeping): force at level n+1 times
+  // the synchronised velocity, external force over the drift. A moving clamp's reaction on its
+  // particle is −(f_int + f_ext) (the particle does not accelerate); its power at the clamp's
+  // constant velocity is the clamps' work. The per-particle powers come from pass 2
+  // (w.power); summed here serially in particle order, as dot products of the same numbers,
+  // so the sums do not depend on the thread count.
+  auto account = [&] {
     double diss = 0.0, hg = 0.0, ext = 0.0, grip = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      diss -= dot(body.f_av[i], body.v[i]);
-      hg -= dot(body.f_hg[i], body.v[i]);
-      ext += dot(w.fext[i], vh[i]);
-      if (body.clamped[i]) grip -= dot(body.f_int[i] + w.fext[i], body.clamp_velocity[i]);
+      const SubstepPower& p = w.power[i];
+      diss -= p.viscous;
+      hg -= p.hourglass;
+      ext += p.external;
+      if (body.clamped[i]) grip -= p.clamp;
     }
     body.dissipated += h * diss;
     body.hourglass_work += h * hg;
     body.external_work += h * ext;
     body.clamp_work += h * grip;
   };
-  // First half kick and drift of particle i from v and a into (vh, x).
-  auto kick_drift = [&](std::size_t i, std::span<const Vec2> x, std::span<Vec2> vh_out,
-                        std::span<Vec2> x_out) {
+  // First half kick and drift of particle i from its v and a into (vh, x).
+  auto kick_drift = [&](std::size_t i, Vec2 vi, Vec2 ai, std::span<const Vec2> x,
+                        std::span<Vec2> vh_out, std::span<Vec2> x_out) {
     if (body.clamped[i]) {  // held fixed (x = X) or moved at the clamp's velocity
       vh_out[i] = body.clamp_velocity[i];
       x_out[i] = x[i] + h * vh_out[i];
       return;
     }
-    vh_out[i] = body.v[i] + hh * body.a[i];
+    vh_out[i] = vi + hh * ai;
     x_out[i] = x[i] + h * vh_out[i];
   };
 
@@ -76,24 +81,30 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   bool swapped = false;  // the current positions are in w.x_next
   exec.run_team(threads, [&](const Team& team) {
-    std::span<Vec2> x = body.x, xn = w.x_next, vh = w.vhalf, vhn = w.vhalf_next;
+    // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
+    // update them in place; the Eulerian pair forces read the neighbours' current x and v½,
+    // so the next ones go to second buffers, swapped after the pass.
+    std::span<Vec2> x = body.x, vh = w.vhalf;
+    std::span<Vec2> xn = eulerian ? std::span<Vec2>(w.x_next) : x;
+    std::span<Vec2> vhn = eulerian ? std::span<Vec2>(w.vhalf_next) : vh;
     SubstepPairRef* const ref = w.ref.data();
     SubstepPairRev* const rev = w.rev.data();
     Vec2* const keps_k = w.keps.data();
     SubstepViscous* const visc = w.viscous.data();
+    const std::uint32_t* const upper = w.upper.data();
+    double* const stress_power = w.stress_power.data();
     SubstepParticleMats* const mats = w.mats.data();
     // Raw pointers: the compiler then keeps them in registers across the law's call.
     Mat2* const Fb = body.F.data();
     Mat2* const Pb = body.P.data();
     const double* const V0 = body.V0.data();
     const double* const rho0 = body.rho0.data();
+    const double* const hp = topo.h.data();
     const double* const m = body.m.data();
     const std::uint8_t* const clamped = body.clamped.data();
     const Vec2* const clamp_v = body.clamp_velocity.data();
     const Vec2* const fext = w.fext.data();
     const Vec2* const gsum = w.gsum.data();
-    const std::uint32_t* const upper = w.upper.data();
-    double* const stress_power = w.stress_power.data();
     Vec2* const a = body.a.data();
     Vec2* const v = body.v.data();
     Vec2* const f_int = body.f_int.data();
@@ -102,28 +113,24 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     double* const energy = body.e.data();
     const auto [b, e] = team.share(n);
     for (std::size_t i = b; i < e; ++i) {
-      w.upper[i] = start[i + 1];
       Vec2 gs;
+      w.upper[i] = start[i + 1];
       for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
         const std::uint32_t j = index[k];
         if (j > i && w.upper[i] == start[i + 1]) w.upper[i] = k;
         SubstepPairRef& r = ref[k];
         r.g = grad0[k];
         r.X = body.X[j] - body.X[i];
-        r.j = j;
-        r.reverse = reverse[k];
         r.kappa = kHourglass ? hourglass_pair_stiffness(body, topo, alpha, i, j, k) : 0.0;
         // The same expressions as viscous_force_on (artificial_viscosity.h).
         r.viscous_weight = kViscous ? viscous_pair_weight(body, topo, i, k) : 0.0;
-        r.h = 0.5 * (topo.h[i] + topo.h[j]);
-        r.rho0 = 0.5 * (body.rho0[i] + body.rho0[j]);
         rev[k] = {grad0[reverse[k]], j, reverse[k]};
         gs += grad0[k];
       }
       w.gsum[i] = gs;
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
-      kick_drift(i, x, vh, x);
+      kick_drift(i, body.v[i], body.a[i], x, vh, x);
     }
     team.barrier();
     for (int step = 0; step < steps; ++step) {
@@ -131,9 +138,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         if (team.leader()) build_eulerian_pairs(body, x);
         team.barrier();
       }
-      // Pass 1: F and Ḟ, the viscous pair terms (each pair once, from its lower particle:
-      // they depend on x and v½ only), the law's committing update, stress power, hourglass
-      // moment. Two-lane arithmetic (core/simd2.h) with the rounding of the Vec2 / Mat2 forms.
+      // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
+      // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
+      // rounding of the Vec2 / Mat2 forms.
       for (std::size_t i = b; i < e; ++i) {
         simd::Cols Fc, Fdc;
         // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
@@ -143,22 +150,25 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         for (std::uint32_t k = k0; k < ku; ++k) {
           const SubstepPairRef& r = ref[k];
           const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
-          simd::add_outer(Fc, simd::load(x[r.j]) - xi, gx, gy);
-          simd::add_outer(Fdc, simd::load(vh[r.j]) - vi, gx, gy);
+          simd::add_outer(Fc, simd::load(x[index[k]]) - xi, gx, gy);
+          simd::add_outer(Fdc, simd::load(vh[index[k]]) - vi, gx, gy);
         }
         for (std::uint32_t k = ku; k < k1; ++k) {
           const SubstepPairRef& r = ref[k];
-          const v2d xj = simd::load(x[r.j]), vj = simd::load(vh[r.j]);
+          const std::uint32_t j = index[k];
+          const v2d xj = simd::load(x[j]), vj = simd::load(vh[j]);
           const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
           simd::add_outer(Fc, xj - xi, gx, gy);
           simd::add_outer(Fdc, vj - vi, gx, gy);
           if constexpr (kViscous) {
             // viscous_force_on's pair term for i; for j it is the exact negative (x_ji =
-            // −x_ij and v_ji = −v_ij bit for bit, Π and |c| symmetric), the heat the same.
+            // −x_ij and v_ji = −v_ij bit for bit, Π, h, ρ0 and |c| symmetric), the heat the
+            // same.
             Vec2 xij, vij;
             simd::store(xij, xi - xj);
             simd::store(vij, vi - vj);
-            const double pi = monaghan_pi(vij, xij, r.h, r.rho0, c, av_alpha, av_beta);
+            const double pi = monaghan_pi(vij, xij, 0.5 * (hp[i] + hp[j]),
+                                          0.5 * (rho0[i] + rho0[j]), c, av_alpha, av_beta);
             Vec2 f;
             double q = 0.0;
             if (pi != 0.0) {
@@ -167,7 +177,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
               q = -0.5 * s * dot(xij, vij);
             }
             visc[k] = {f, q};
-            visc[r.reverse] = {-f, q};
+            visc[reverse[k]] = {-f, q};
           }
         }
         const Mat2 F = simd::mat(Fc);
@@ -206,7 +216,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             const SubstepPairRef& r = ref[k];
             const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
             const v2d keps =
-                simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[r.j]) - xi));
+                simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
             simd::store(keps_k[k], keps);
             simd::add_outer(Gi, keps, Xx, Xy);
           }
@@ -214,7 +224,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           simd::store(mi.g_c1, Gi.c1);
         }
       }
-      if (team.leader() && step > 0) account(vhn);  // the previous sub-step's v½
+      if (team.leader() && step > 0) account();  // the previous sub-step's
       team.barrier();
       // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
       // over i's pairs, each in its own accumulator), second half kick, internal energy; next
@@ -242,8 +252,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const SubstepParticleMats& mi = mats[i];
         const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
         Vec2 fsv, favv, fhg;
-        simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
         simd::store(favv, fav);
+        simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
         if constexpr (kHourglass)
           simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
         if constexpr (eulerian) {
@@ -252,22 +262,31 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           fsv += fse;
           favv += fve;
         }
-        f_av[i] = favv;
-        f_hg[i] = fhg;
-        f_int[i] = fsv + favv + fhg;
-        a[i] = clamped[i] ? Vec2{} : (f_int[i] + fext[i]) / m[i];
-        v[i] = clamped[i] ? clamp_v[i] : vh[i] + hh * a[i];
         energy[i] += h * (stress_power[i] + heat / m[i]);
-        if (more) kick_drift(i, x, vhn, xn);
+        // Forces, acceleration and velocity are body state only at the end of the call (and
+        // read by the Eulerian operators): in between they live in registers and w.power.
+        const Vec2 fi = fsv + favv + fhg;
+        const Vec2 ai = clamped[i] ? Vec2{} : (fi + fext[i]) / m[i];
+        const Vec2 vi = clamped[i] ? clamp_v[i] : vh[i] + hh * ai;
+        w.power[i] = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
+                      clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
+        if (eulerian || !more) {
+          f_av[i] = favv;
+          f_hg[i] = fhg;
+          f_int[i] = fi;
+          a[i] = ai;
+          v[i] = vi;
+        }
+        if (more) kick_drift(i, vi, ai, x, vhn, xn);
       }
       team.barrier();
-      if (more) {
+      if (eulerian && more) {
         std::swap(x, xn);
         std::swap(vh, vhn);
         if (team.leader()) swapped = !swapped;
       }
     }
-    if (team.leader() && steps > 0) account(vh);
+    if (team.leader() && steps > 0) account();
   });
   if (swapped) std::swap(body.x, w.x_next);
   body.history.updates += static_cast<std::uint64_t>(steps);

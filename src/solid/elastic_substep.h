@@ -13,9 +13,13 @@
 //          viscous_force_on bit for bit, at half the square roots and divisions);
 //   pass 2 (particle i): the forces need V0_j P_j, G_j and κ ε of the reversed pairs of
 //          every neighbour; stress, viscous and hourglass sums in one loop over i's pairs
-//          (each in its own accumulator); then a_i, the second half kick, the internal energy
-//          and, for the next sub-step, the first half kick and drift into second buffers
-//          (neighbours still read the current x and v½ in this pass).
+//          (each in its own accumulator); then a_i, the second half kick, the internal energy,
+//          i's powers for the energy bookkeeping and, for the next sub-step, the first half
+//          kick and drift. Pass 2 reads no neighbour's x or v½, so the kick and drift update
+//          them in place (with an Eulerian switch, whose pair forces read the neighbours'
+//          current x and v½, into second buffers). f_av, f_hg, f_int, a and v are stored at
+//          the last sub-step only: in between they live in registers and the per-particle
+//          powers (memory traffic: the 60 000-particle ring does not fit in the caches).
 // Each pass writes only its own particles' entries, apart from the viscous terms of pass 1,
 // whose second slot (j, i) no other particle writes, so results are bit-identical for any
 // thread count. The pair terms of i's own side in pass 2, V0_i P_i g_ij (stress) and
@@ -27,13 +31,16 @@
 // columns), which round as the scalar forms. With a team of two or more threads the whole
 // call is one parallel region with 2 barriers per sub-step, plus one after the first kick
 // and drift (Executor::sync_counts). Reference pair constants in CSR order (g_ij, X_ij,
-// hourglass stiffness κ_ij, viscous weight |c_ij|, pair h and ρ0 in one record per pair for
-// pass 1; g_ji with j and the reverse slot in another for pass 2) are computed once per
-// call, not per sub-step, so the pair loops read them without indirection; the loops are
-// instantiated per law, per on/off state of hourglass control and viscosity and per
-// Eulerian state (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and
-// external work) is summed serially in particle order by the team's first thread while the
-// others run pass 1 of the next sub-step, so it too does not depend on the thread count.
+// hourglass stiffness κ_ij and viscous weight |c_ij| in one 48-byte record per pair for
+// pass 1, j from the topology's index, the pair h and ρ0 from i's and j's; g_ji with j and
+// the reverse slot in another for pass 2) are computed once per call, not per sub-step, so
+// the pair loops read them without indirection; the loops are instantiated per law, per
+// on/off state of hourglass control and viscosity and per Eulerian state
+// (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and external work)
+// is summed serially in particle order, from the per-particle powers of pass 2, by the
+// team's first thread while the others run pass 1 of the next sub-step, so it too does not
+// depend on the thread count. All of this is bit-identical to the sub-step before these
+// storage changes (docs/validation.md, "Solid sub-step").
 #pragma once
 #include <cstddef>
 

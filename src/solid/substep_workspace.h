@@ -12,16 +12,15 @@
 namespace slamsph {
 
 // Reference constants of pair k = (i, j) read by pass 1 (F, Ḟ, hourglass moment, viscous
-// terms), in one record so that the pass streams one array.
+// terms), in one record so that the pass streams one array; j comes from the topology's
+// index. 48 bytes: the pair smoothing length and density of the viscous term are formed from
+// the per-particle h and ρ0 of i and j (j is near i in the stored order, so in cache), not
+// stored per pair.
 struct SubstepPairRef {
   Vec2 g;                 // g_ij = topology.grad0[k] [1/m]
   Vec2 X;                 // X_j − X_i [m]
   double kappa;           // hourglass pair stiffness κ_ij [N/m^3·m^2]
   double viscous_weight;  // |c_ij| of the artificial viscosity [m]
-  double h;               // symmetric smoothing length (h_i + h_j)/2 [m]
-  double rho0;            // (ρ0_i + ρ0_j)/2 [kg/m^3]
-  std::uint32_t j;
-  std::uint32_t reverse;  // position of (j, i)
 };
 // Those read by pass 2 (forces).
 struct SubstepPairRev {
@@ -41,6 +40,14 @@ struct SubstepParticleMats {
   Vec2 vp_c0, vp_c1, g_c0, g_c1;
 };
 
+// Per particle, the powers of the energy bookkeeping of one sub-step, written in pass 2 and
+// summed in particle order by the team's first thread during the next pass 1 (the forces and
+// velocities they come from are overwritten meanwhile) [W/m]: f_av·v, f_hg·v, f_ext·v½ and
+// for a clamped particle (f_int + f_ext)·v_clamp.
+struct SubstepPower {
+  double viscous, hourglass, external, clamp;
+};
+
 struct SubstepWorkspace {
   // Per pair k = (i, j), in the topology's CSR order: reference constants, filled at the
   // start of every call (so a rebuilt topology needs no invalidation), read in the pair
@@ -55,9 +62,12 @@ struct SubstepWorkspace {
   std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
-  std::vector<Vec2> vhalf;                // half-step velocity (two buffers, swapped)
+  std::vector<SubstepPower> power;        // of the sub-step just completed
+  std::vector<Vec2> vhalf;                // half-step velocity
+  // With an Eulerian switch only (otherwise updated in place): v½ and x after the next kick
+  // and drift, swapped with vhalf and body.x after pass 2.
   std::vector<Vec2> vhalf_next;
-  std::vector<Vec2> x_next;          // positions after the next drift (swapped with body.x)
+  std::vector<Vec2> x_next;
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
@@ -67,13 +77,12 @@ struct SubstepWorkspace {
     keps.resize(pairs);
     viscous.resize(pairs);
     upper.resize(particles);
+    stress_power.resize(particles);
     gsum.resize(particles);
     mats.resize(particles);
     fext.resize(particles);
+    power.resize(particles);
     vhalf.resize(particles);
-    vhalf_next.resize(particles);
-    x_next.resize(particles);
-    stress_power.resize(particles);
   }
 };
 
