@@ -23,9 +23,24 @@ std::vector<std::string> override_end_time(CaseConfig& cfg, double end_time) {
   std::snprintf(end, sizeof end, "%g", end_time);
   const std::size_t n = static_cast<std::size_t>(snaps.end() - after);
   snaps.erase(after, snaps.end());
-  return {"--end-time " + std::string(end) + " s ends the run before output.snapshots at " +
-          dropped + " s: " + (n == 1 ? "that snapshot is" : "those snapshots are") +
-          " not written (and not listed in case.resolved.toml)"};
+  std::string w = "--end-time " + std::string(end) + " s ends the run before output.snapshots at " +
+                  dropped + " s: " + (n == 1 ? "that snapshot is" : "those snapshots are") +
+                  " not written (and not listed in case.resolved.toml)";
+  // With no snapshot left, what the case check requires snapshots for goes too (the skin
+  // profile is written at the snapshot times, the view frames them): the resolved case must
+  // read back.
+  if (snaps.empty()) {
+    std::string also;
+    if (!cfg.output.skin_profile.empty()) also += "output.skin_profile";
+    if (cfg.output.snapshot_view.max.x > cfg.output.snapshot_view.min.x)
+      also += also.empty() ? "output.snapshot_view" : " and output.snapshot_view";
+    if (!also.empty())
+      w += "; with no snapshot left, " + also + " (written at the snapshot times) " +
+           (also.find(" and ") == std::string::npos ? "is" : "are") + " dropped too";
+    cfg.output.skin_profile.clear();
+    cfg.output.snapshot_view = Box{};
+  }
+  return {w};
 }
 
 }  // namespace slamsph

@@ -2,9 +2,11 @@
 // Simulation): the run ends at T instead of the case's numerics.end_time. Times the case
 // lists within the run that the shorter run never reaches (output.snapshots after T) are
 // dropped, each drop reported as a warning of the run (printed before any computation,
-// kept in summary.json), so that case.resolved.toml stays a valid case that `slamsph plot`
-// and `resume` read back. Before this, a run with an --end-time before a listed snapshot
-// completed and then failed (exit 2) when the plot step re-read its own case.resolved.toml.
+// kept in summary.json), and with no snapshot left output.skin_profile and
+// output.snapshot_view too (the case check requires snapshots for them), so that
+// case.resolved.toml stays a valid case that `slamsph plot` and `resume` read back. Before this, a
+// run with an --end-time before a listed snapshot completed and then failed (exit 2) when the plot
+// step re-read its own case.resolved.toml.
 #pragma once
 #include <string>
 #include <vector>

@@ -151,5 +151,30 @@ TEST(AppSnapshots, EndTimeBeforeASnapshotDropsItWithAWarning) {
   fs::remove_all(dir);
 }
 
+// With every snapshot after --end-time, the skin profile (which the case check requires
+// snapshots for, as it does the snapshot view) is dropped too, with the warning, and the resolved
+// case reads back (a 6-layer fuselage slice to 1 ms completed and then failed, exit 2, in session
+// 13).
+TEST(AppSnapshots, EndTimeBeforeEverySnapshotDropsTheSkinProfileToo) {
+  const fs::path dir = fs::temp_directory_path() / "slamsph_snapshots_end_time_all_test";
+  fs::remove_all(dir);
+  RunOptions opt = silent_options(1);
+  opt.write_output = true;
+  opt.out_dir = dir.string();
+  opt.end_time = 0.002;
+  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), opt);
+  ASSERT_EQ(sim.warnings().size(), 1u);
+  EXPECT_NE(sim.warnings()[0].find("no snapshot left, output.skin_profile (written at the "
+                                   "snapshot times) is dropped too"),
+            std::string::npos)
+      << sim.warnings()[0];
+  ASSERT_EQ(sim.run(), 0);
+  EXPECT_FALSE(fs::exists(dir / "snapshots" / "snapshot_01.csv"));
+  const CaseConfig back = load_case((dir / "case.resolved.toml").string());
+  EXPECT_TRUE(back.output.snapshots.empty());
+  EXPECT_TRUE(back.output.skin_profile.empty());
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace slamsph
