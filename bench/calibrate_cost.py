@@ -12,8 +12,9 @@ constants of the model in src/app/cost_model.h by least squares on the relative 
   lists    neighbour_lists = rebuilds c_rebuild (N_water + N_contact) (the per-step
            displacement check is small: a separate per-step term fitted negative)
   contact  contact = steps c_cpair (N_fc + N_cf) with water,
-           steps c_dry N_contact without
-  solid    solid_substeps = Σ_b N_b (k_law c_sub substeps_b + c_call steps), c_sub and
+           every phase but the sub-steps = steps c_dry N_contact without
+  solid    solid_substeps = Σ_b (k_law c_sub P_b substeps_b + c_call N_b steps) (P_b the
+           body's pair entries, printed by `slamsph check` per particle), c_sub and
            c_call from the SVK cases, k_law of Johnson–Cook bodies from theirs (median)
 
 Then it prints, for each case, the measured phase times against the fitted model. Time is
@@ -65,8 +66,9 @@ def check(slamsph, case):
                   r"(\d+) contact pairs listed\)", out)
     if not m:
         sys.exit(f"{case}: no prediction in 'slamsph check' output:\n{out}")
-    elastic = [(int(a), float(f)) for a, f in re.findall(
-        r"body \S+: (\d+) particles, elastic, .*? law cost x(\S+)", out)]
+    elastic = [(int(a), float(f), float(q)) for a, q, f in re.findall(
+        r"body \S+: (\d+) particles, elastic, (\S+) pairs per particle, .*? law cost x(\S+)",
+        out)]
     return dict(water=int(m.group(1)), contact=int(m.group(2)), wpairs=int(m.group(3)),
                 cpairs=int(m.group(4)), elastic=elastic)
 
@@ -168,14 +170,18 @@ def main():
     cl = lsq([([1e-9 * r["rebuilds"] * (r["water"] + r["contact"])], r["t"]["neighbour_lists"])
               for r in wet if r["rebuilds"] > 0])
     cc = lsq([([1e-9 * r["steps"] * r["cpairs"]], r["t"]["contact"]) for r in wet])
-    cd = lsq([([1e-9 * r["steps"] * r["contact"]], r["t"]["contact"]) for r in dry]) if dry \
+    # Without water everything but the sub-steps is per contact particle and step: the body
+    # state, the step limit, the checks, the records and the (cheap) displacement check.
+    def dry_t(r):
+        return sum(v for k, v in r["t"].items() if k not in ("solid_substeps", "fluid_rates"))
+    cd = lsq([([1e-9 * r["steps"] * r["contact"]], dry_t(r)) for r in dry]) if dry \
         else [0.0]
 
     # One elastic body per shipped case: its sub-steps are the run's. SVK bodies fit the
     # sub-step and per-call costs; Johnson–Cook bodies then their law factor.
     def solid_x(r, law):
-        nb, _ = r["elastic"][0]
-        return [1e-9 * nb * law * r["sub"], 1e-9 * nb * r["steps"]]
+        nb, _, pairs = r["elastic"][0]  # the sub-step costs per pair entry, the call per particle
+        return [1e-9 * nb * pairs * law * r["sub"], 1e-9 * nb * r["steps"]]
     svk = [r for r in el if r["elastic"][0][1] == 1.0]
     jc = [r for r in el if r["elastic"][0][1] != 1.0]
     cs = lsq([(solid_x(r, 1.0), r["t"]["solid_substeps"]) for r in svk])
@@ -184,7 +190,7 @@ def main():
         for r in jc) if jc else 1.75
     print(f"water_pair_ns_small = {cp[0]:.2f}, water_pair_ns_large = {cp[1]:.2f}, water_ns = "
           f"{cw[0]:.1f}, rebuild_ns = {cl[0]:.1f}, contact_pair_ns = "
-          f"{cc[0]:.2f}, dry_contact_ns = {cd[0]:.1f}, solid_ns = {cs[0]:.1f}, solid_call_ns = "
+          f"{cc[0]:.2f}, dry_contact_ns = {cd[0]:.1f}, solid_pair_ns = {cs[0]:.1f}, solid_call_ns = "
           f"{cs[1]:.1f}, johnson_cook_factor = {kjc:.2f}")
     print()
     print("| case | water / contact / elastic | steps | phase: measured / model [s] water, "
@@ -204,10 +210,11 @@ def main():
             x = solid_x(r, law)
             ms = cs[0] * x[0] + cs[1] * x[1]
         meas = [water_t(r) + r["t"]["fluid_rates"], r["t"]["neighbour_lists"], r["t"]["contact"],
-                r["t"]["solid_substeps"]]
+                r["t"]["solid_substeps"]] if r["water"] else \
+            [0.0, 0.0, dry_t(r), r["t"]["solid_substeps"]]
         mod = [mw, ml, mc, ms]
         tm, tp = sum(meas), sum(mod)
-        ne = sum(p for p, _ in r["elastic"])
+        ne = sum(p for p, _, _ in r["elastic"])
         print(f"| {r['name']} | {r['water']} / {r['contact']} / {ne} | {r['steps']} | " +
               ", ".join(f"{x:.3g} / {y:.3g}" for x, y in zip(meas, mod)) +
               f" | {tm:.3g} / {tp:.3g} ({100 * (tp / tm - 1):+.0f} %) | {r['load']:.2f} |")

@@ -24,10 +24,16 @@
 //   lists   = c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
 //             steps (rebuilt when a particle has moved half the skin s 2 h_c,
 //             coupling/interaction_lists.h; v the predicted speed)
-//   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads)
-//   solid   = Σ_elastic N_b (k_law c_sub(N_b) n_b + c_call) (n_b sub-steps per fluid step;
-//             c_call the per-call set-up of the sub-step loop, solid/elastic_substep.cpp;
-//             c_sub log-linear in N_b between 25 000 and 60 000 particles, cache again)
+//   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads,
+//             and without water also the step limit, checks and records)
+//   solid   = Σ_elastic (k_law c_sub(N_b) P_b n_b + c_call N_b) (n_b sub-steps per fluid
+//             step over P_b pair entries, each pair from both sides: the sub-step's two passes
+//             run over the pair lists, and a 2 000-particle plate with 3.88 entries per
+//             particle and a 2 514-particle ring with 3.0 measure the same 18 ns per entry on
+//             one thread while their costs per particle differ by 1.3x; c_call the per-call
+//             set-up of the sub-step loop, solid/elastic_substep.cpp, per particle; c_sub
+//             log-linear in N_b between 25 000 and 60 000 particles, where the arrays leave
+//             the caches)
 // The wall time on T threads divides the water, lists and contact phases by the measured
 // two-thread speed-up S_f(N_water) and each body's sub-steps by S_s(N_b) when its team has
 // two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise. This
@@ -52,16 +58,22 @@ struct CostConstants {
   double water_ns = 21.4;         // per water particle per fluid step
   double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
   double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
-  double dry_contact_ns = 12.0;   // per contact particle per fluid step, no water
-  double solid_ns = 100.0;        // per elastic particle per sub-step (SVK), ≤ solid_n_small
+  // Per contact particle per fluid step, no water: every phase but the sub-steps (body state,
+  // step limit, checks, records; the fit had only the contact phase, 12 ns): the oscillating
+  // plate to its end, 1 thread, session 13: 1.82 s over 31 557 steps of 1 872 particles.
+  double dry_contact_ns = 31.0;
+  // Per elastic pair entry per sub-step (SVK), ≤ solid_n_small particles: the fitted 100 ns
+  // per particle (on bodies of 3.0-3.27 entries per particle, mostly) over 3.15 entries.
+  double solid_pair_ns = 32.0;
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
-  // 60 000-particle ring of bench_solid runs 2.05x slower per particle than the 10 052 one
-  // (BM_RingSubsteps, 1 thread, idle, medians of 3: 303 against 148 ns, docs/validation.md
-  // §6).
-  double solid_ns_large = 205.0;
-  // Per elastic particle per fluid step (the sub-step loop's set-up): the two fits gave 8 and
-  // 140 ns (poorly determined by 60-step runs); 60 ns reproduces the one-sub-step-per-step
-  // cases (oscillating plate, tension bar: 90–239 and 132–226 ns per particle-step measured).
+  // 60 000-particle ring of bench_solid runs 1.69x slower per pair entry than the 10 052 one
+  // (BM_RingSubsteps, 1 thread, medians of 3, session 13: 29.1 against 17.2 ns per entry;
+  // session 12 on another machine of this kind 1.95x; docs/validation.md §6).
+  double solid_pair_ns_large = 54.0;
+  // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
+  // with the symplectic step): the two fits gave 8 and 140 ns (poorly determined by 60-step
+  // runs); 60 ns reproduces the one-sub-step-per-step cases (oscillating plate, tension bar:
+  // 90–239 and 132–226 ns per particle-step measured). Scaled by its own machine factor.
   double solid_call_ns = 60.0;
   double johnson_cook_factor = 2.56;  // a Johnson–Cook sub-step against an SVK one
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
@@ -72,19 +84,25 @@ struct CostConstants {
   // ≥ n_large, log-linear between.
   double fluid_speedup_small = 1.56, fluid_speedup_large = 1.99;
   double fluid_n_small = 3200, fluid_n_large = 320000;
-  // Two-thread speed-up of a body's sub-steps whose team has two threads: likewise.
-  double solid_speedup_small = 1.35, solid_speedup_large = 1.64;
-  // The solid cost and speed-up hold their small-body values up to 25 000 particles: the
-  // 6-layer skin (22 506 particles, session 12, docs/validation.md §6) ran its sub-steps at
-  // 60 ns per particle-sub-step on 1 thread (94 ns before the machine factor, against the
-  // fitted 100) and 1.32x faster on 2 threads; interpolating from 10 000 had predicted
-  // 138 ns and 1.47x (the 5 ms slice +59 %).
+  // The solid cost holds its small-body value up to 25 000 particles: the 6-layer skin
+  // (22 506 particles, session 12, docs/validation.md §6) ran its sub-steps at the 2-layer
+  // skin's cost per pair entry; interpolating from 10 000 had predicted 1.47x more (the 5 ms
+  // slice +59 %).
   double solid_n_small = 25000, solid_n_large = 60000;
+  // Two-thread speed-up of a body's sub-steps whose team has two threads: small at
+  // ≤ solid_speedup_n_small particles, large at ≥ solid_speedup_n_large, log-linear between.
+  // Measured in whole-run slices (session 13, the solid phase on 1 and 2 threads, each
+  // against its own machine factor: docs/validation.md §6 "Cost model"): the 2-layer skin
+  // (2 500) 1.38, the L floor section (5 434) 1.47, the 6-layer skin (22 506) 1.72; the
+  // 60 000-particle ring of bench_solid 2.0 (not a run: kept at 1.75).
+  double solid_speedup_small = 1.38, solid_speedup_large = 1.75;
+  double solid_speedup_n_small = 2500, solid_speedup_n_large = 22500;
 };
 
 struct BodyCost {
   std::string name;
   std::size_t particles = 0;
+  std::size_t pairs = 0;  // elastic: its topology's pair entries (each pair from both sides)
   bool elastic = false;
   double stable_step = 0.0;    // [s] elastic: at the start; rigid: +inf
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
@@ -117,17 +135,23 @@ struct CostPrediction {
 // The prediction for `sim` as constructed (time 0) to its end time.
 CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 
-// This machine against the one the constants were measured on: the CPU time of two short
-// built-in runs on one thread (a 3 200-particle water block in a tank, 40 fluid steps; a
-// 2 000-particle SVK plate without water, 60 steps), each the fastest of three, divided by
-// what `k` predicts for them. A CPU of another speed, or one whose sibling hardware thread
-// is busy, changes all costs alike to first order; `slamsph check` scales the constants by
-// these factors (about 0.3 s). Measured: 1 on the calibration runs' machine by
-// construction of the fit; 0.4–0.6 on the same machine kind when it is idle (docs/validation.md
-// §6 "Cost model").
+// This machine against the one the constants were measured on, from short built-in runs on
+// one thread, each the fastest of five, divided by what `k` predicts for them: for the water
+// phases, a 3 200-particle water block in a tank for 40 fluid steps; for the solid, a
+// 2 000-particle SVK plate without water advanced by advance_body one sub-step per call
+// (100 calls) and 40 sub-steps per call (5 calls). The difference of the two is 39 sub-steps
+// (the sub-step factor), the rest of the one-sub-step call its set-up (the call factor): a
+// run whose bodies take hundreds of sub-steps per fluid step (the fuselage sections) costs
+// almost only sub-steps, one that takes one per step (the oscillating plate) mostly set-up,
+// and the two do not change alike from machine to machine or from hour to hour (one factor
+// for both, session 12, varied 0.64-0.95 and over-predicted the 6-layer skin by 86 %:
+// docs/validation.md §6 "Cost model"). A CPU of another speed, or one whose sibling hardware
+// thread is busy, changes the costs of each part alike to first order; `slamsph check` scales
+// the constants by these factors (about 0.3 s).
 struct MachineFactors {
-  double fluid = 1.0;  // water, neighbour lists, contact
-  double solid = 1.0;  // sub-steps
+  double fluid = 1.0;       // water, neighbour lists, contact
+  double solid = 1.0;       // per sub-step (pair entry)
+  double solid_call = 1.0;  // per call of the sub-step loop (its set-up)
 };
 MachineFactors measure_machine_factors(const CostConstants& k = {});
 CostConstants scaled(const CostConstants& k, const MachineFactors& f);

@@ -105,20 +105,21 @@ int run_or_check(const std::string& cmd, Request& req) {
   if (cmd == "check") {
     RunOptions check_opt = silent_options(1);
     check_opt.max_particles = opt.max_particles;
+    check_opt.end_time = opt.end_time;
     Simulation sim(std::move(cfg), check_opt);
     warn(sim);
     std::printf("%s: ok (%zu fluid particles", sim.config().name.c_str(), sim.fluid().size());
     for (const auto& b : sim.bodies()) std::printf(", %s: %zu", b.name.c_str(), b.size());
     const int threads = opt.threads > 0 ? opt.threads : Executor::default_threads();
-    // The constants scaled to this machine (two short probe runs, app/cost_model.h).
+    // The constants scaled to this machine (short built-in probe runs, app/cost_model.h).
     const MachineFactors f = req.no_machine_probe ? MachineFactors{} : measure_machine_factors();
     if (req.no_machine_probe)
       std::printf(")\nmachine: not probed (--no-machine-probe): the calibration runs' costs\n");
     else
       std::printf(
-          ")\nmachine: costs x%.2g (water) and x%.2g (solid) of the calibration runs' "
-          "(measured on two built-in probe runs)\n",
-          f.fluid, f.solid);
+          ")\nmachine: costs x%.2g (water), x%.2g (solid sub-step) and x%.2g (solid set-up "
+          "per fluid step) of the calibration runs' (measured on built-in probe runs)\n",
+          f.fluid, f.solid, f.solid_call);
     std::printf("%s", describe_cost(predict_cost(sim, scaled({}, f)), threads).c_str());
     return 0;
   }
@@ -223,9 +224,15 @@ int dispatch(int argc, char** argv) {
                        thread_default_text() + ")")
       ->check(CLI::Range(1, Executor::kMaxThreads))
       ->type_name("N");
+  check
+      ->add_option("--end-time", req.run.end_time,
+                   "Simulated end time in s to predict for, as run --end-time (default: "
+                   "numerics.end_time of the case)")
+      ->check(kPositiveFinite)
+      ->type_name("T");
   check->add_flag("--no-machine-probe", req.no_machine_probe,
-                  "Predict with the calibration machine's per-particle costs, without the two "
-                  "short probe runs (~0.2 s) that scale them to this machine");
+                  "Predict with the calibration machine's per-particle costs, without the "
+                  "short built-in probe runs (~0.3 s) that scale them to this machine");
 
   CLI::App* resume = app.add_subcommand(
       "resume",
