@@ -87,7 +87,7 @@ def main():
                     help="copy each run's summary.json to DIR/<case>_<threads>t.json")
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="a case override for both the prediction and the run")
-    a = ap.parse_args()
+    a = ap.parse_intermixed_args()
     cases = a.cases or [os.path.join(ROOT, c) for c in SHIPPED]
     extra = ["--end-time", str(a.end_time)] if a.end_time else []
     for kv in a.set:
