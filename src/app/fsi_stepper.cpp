@@ -119,14 +119,17 @@ void FsiStepper::step() {
   }
   const TaitEos& eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  exec_.for_each(f.size(), [&](std::size_t i) {
-    f.v_half[i] = f.v[i] + hdt * f.a[i];
-    f.rho_half[i] = f.rho[i] + hdt * f.drho[i];
-    f.x[i] += dt * f.v_half[i];
-    f.v[i] = f.v_half[i] + hdt * f.a[i];  // predicted, for the velocity-dependent rates
-    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
-  });
+  exec_.for_each(
+      f.size(),
+      [&](std::size_t i) {
+        f.v_half[i] = f.v[i] + hdt * f.a[i];
+        f.rho_half[i] = f.rho[i] + hdt * f.drho[i];
+        f.x[i] += dt * f.v_half[i];
+        f.v[i] = f.v_half[i] + hdt * f.a[i];  // predicted, for the velocity-dependent rates
+        f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
+        f.p[i] = eos.pressure(f.rho[i]);
+      },
+      Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
   const bool average = prm_.substep_average && !dual_.bodies_share_step(f.size());
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
@@ -145,11 +148,14 @@ void FsiStepper::step() {
   dual_.correct(sys_.bodies, dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  exec_.for_each(f.size(), [&](std::size_t i) {
-    f.v[i] = f.v_half[i] + hdt * f.a[i];
-    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
-  });
+  exec_.for_each(
+      f.size(),
+      [&](std::size_t i) {
+        f.v[i] = f.v_half[i] + hdt * f.a[i];
+        f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
+        f.p[i] = eos.pressure(f.rho[i]);
+      },
+      Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
   end_step(dt, clock, t);
 }
@@ -194,11 +200,14 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& f = sys_.fluid;
   const TaitEos& eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  exec_.for_each(f.size(), [&](std::size_t i) {
-    f.rho[i] += hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
-    f.x[i] += hdt * f.v[i];
-  });
+  exec_.for_each(
+      f.size(),
+      [&](std::size_t i) {
+        f.rho[i] += hdt * f.drho[i];
+        f.p[i] = eos.pressure(f.rho[i]);
+        f.x[i] += hdt * f.v[i];
+      },
+      Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
   advance_bodies_half(time_, hdt);
   clock.lap(t.solid_substeps);
@@ -206,20 +215,26 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   dual_.correct(sys_.bodies, dt);  // dt/2 (F_n+1/2 - F_n-1/2): the first half's correction
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  exec_.for_each(f.size(), [&](std::size_t i) {
-    f.v[i] += dt * f.a[i];
-    f.x[i] += hdt * f.v[i];
-  });
+  exec_.for_each(
+      f.size(),
+      [&](std::size_t i) {
+        f.v[i] += dt * f.a[i];
+        f.x[i] += hdt * f.v[i];
+      },
+      Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
   advance_bodies_half(time_ + hdt, hdt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   time_ += dt;
   clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Continuity);
-  exec_.for_each(f.size(), [&](std::size_t i) {
-    f.rho[i] += hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
-  });
+  exec_.for_each(
+      f.size(),
+      [&](std::size_t i) {
+        f.rho[i] += hdt * f.drho[i];
+        f.p[i] = eos.pressure(f.rho[i]);
+      },
+      Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
   end_step(dt, clock, t);
 }
@@ -234,7 +249,8 @@ void FsiStepper::check_state() const {
     return !finite || x.x < d.min.x || x.x > d.max.x || x.y < d.min.y || x.y > d.max.y;
   };
   const double any = exec_.max_of(
-      fluid.size(), [&](std::size_t i) { return bad_fluid(i) ? 1.0 : 0.0; }, 0.0);
+      fluid.size(), [&](std::size_t i) { return bad_fluid(i) ? 1.0 : 0.0; }, 0.0,
+      Executor::kMinParallelCheap);
   if (any > 0.0) {
     for (std::size_t i = 0; i < fluid.size(); ++i) {
       if (!bad_fluid(i)) continue;

@@ -30,9 +30,11 @@ StepLimit choose_time_step(const FluidParticles& fluid, const std::vector<SolidB
   StepLimit lim{std::numeric_limits<double>::infinity(), StepLimiter::None, 0};
   if (fluid.size() > 0) {
     const double vmax = std::sqrt(exec.max_of(
-        fluid.size(), [&](std::size_t i) { return norm2(fluid.v[i]); }, 0.0));
+        fluid.size(), [&](std::size_t i) { return norm2(fluid.v[i]); }, 0.0,
+        Executor::kMinParallelCheap));
     const double amax = std::sqrt(exec.max_of(
-        fluid.size(), [&](std::size_t i) { return norm2(fluid.a[i]); }, 0.0));
+        fluid.size(), [&](std::size_t i) { return norm2(fluid.a[i]); }, 0.0,
+        Executor::kMinParallelCheap));
     const double h = kernel_f.h();
     lim = {prm.cfl * h / (prm.c0 + vmax), StepLimiter::FluidAcousticCfl, 0};
     if (amax > 0.0 && prm.acceleration_cfl > 0.0) {

@@ -124,6 +124,10 @@ class ThreadPool {
     if (error_) std::rethrow_exception(error_);
   }
 
+  // A worker sleeps on the start of the next region (its spin has run out, or spinning is
+  // off): opening a region now costs a futex wake.
+  bool asleep() const { return start_.sleepers.load(std::memory_order_relaxed) != 0; }
+
   // Sense-reversing barrier of the `team` threads of the running region.
   void barrier(int team) {
     const std::uint32_t sense = barrier_.value.load(std::memory_order_acquire);
@@ -233,6 +237,10 @@ int Executor::team_now(int t) const {
   if (load_ == Load::Fixed) return t;
   if (now < t) reduced_.fetch_add(1, std::memory_order_relaxed);
   return now;
+}
+
+bool Executor::workers_asleep() const {
+  return !in_region() && pool()->asleep();
 }
 
 bool Executor::in_region() {

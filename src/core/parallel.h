@@ -122,12 +122,21 @@ class Executor {
             reduced_.load(std::memory_order_relaxed)};
   }
 
-  // f(i) for i in [0, n), each thread a contiguous share (fewer than kMinParallel items run
-  // on the caller).
+  // f(i) for i in [0, n), each thread a contiguous share (fewer than min_items items run on
+  // the caller).
   static constexpr std::size_t kMinParallel = 257;
+  // min_items for loops of a few nanoseconds per item (a kick or drift with the equation of
+  // state, a norm for a maximum): below it such a loop runs on the caller while a worker
+  // sleeps. A region costs ~1 µs while the workers spin (between the passes of the water
+  // phases) but 40-60 µs when one has gone to sleep during a longer serial phase (a futex
+  // wake of an idle virtual CPU, measured on this machine kind: the displacement check of a
+  // 1 872-particle plate after its one-thread sub-step took 43 µs per step on 2 threads and
+  // 2 µs on 1, session 13), while 16 384 such items take ~30 µs on one thread. Results are
+  // the same either way (docs/validation.md §6).
+  static constexpr std::size_t kMinParallelCheap = 16384;
   template <class F>
-  void for_each(std::size_t n, F&& f) const {
-    const int t = n < kMinParallel ? 1 : team_now(threads_);
+  void for_each(std::size_t n, F&& f, std::size_t min_items = kMinParallel) const {
+    const int t = on_caller(n, min_items) ? 1 : team_now(threads_);
     if (t == 1) {
       for (std::size_t i = 0; i < n; ++i) f(i);
       return;
@@ -202,9 +211,10 @@ class Executor {
   }
 
   // max over i of g(i); returns `init` for n == 0. Max is order-independent, hence exact.
+  // min_items as for for_each (kMinParallelCheap for cheap g).
   template <class G>
-  double max_of(std::size_t n, G&& g,
-                double init = -std::numeric_limits<double>::infinity()) const {
+  double max_of(std::size_t n, G&& g, double init = -std::numeric_limits<double>::infinity(),
+                std::size_t min_items = kMinParallel) const {
     auto max_range = [&](std::size_t b, std::size_t e) {
       double m = init;
       for (std::size_t i = b; i < e; ++i) {
@@ -213,7 +223,7 @@ class Executor {
       }
       return m;
     };
-    const int t = n < kMinParallel ? 1 : team_now(threads_);
+    const int t = on_caller(n, min_items) ? 1 : team_now(threads_);
     if (t == 1) return max_range(0, n);
     std::vector<double> part(static_cast<std::size_t>(t), init);
     region(t, [&](int rank) {
@@ -319,6 +329,12 @@ class Executor {
   // The threads a loop asking for t threads runs on now: 1 inside a region, t with
   // Load::Fixed, with Load::Adapt possibly fewer (counted in sync_counts().reduced).
   int team_now(int t) const;
+  // A loop of n items runs on the caller: fewer than kMinParallel, or fewer than min_items
+  // while a worker sleeps (see kMinParallelCheap).
+  bool on_caller(std::size_t n, std::size_t min_items) const {
+    return n < kMinParallel || (n < min_items && threads_ > 1 && workers_asleep());
+  }
+  bool workers_asleep() const;
   ThreadPool* pool() const;
   // True on a thread that is running a region's job (nested loops then run serially).
   static bool in_region();

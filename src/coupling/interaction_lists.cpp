@@ -9,9 +9,11 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
   if (!force && fluid_ref_.size() == f.size() && contact_ref_.size() == c.size()) {
     const double lim2 = 0.25 * skin_ * skin_;
     const double df = exec.max_of(
-        f.size(), [&](std::size_t i) { return norm2(f.x[i] - fluid_ref_[i]); }, 0.0);
+        f.size(), [&](std::size_t i) { return norm2(f.x[i] - fluid_ref_[i]); }, 0.0,
+        Executor::kMinParallelCheap);
     const double dc = exec.max_of(
-        c.size(), [&](std::size_t i) { return norm2(c.x[i] - contact_ref_[i]); }, 0.0);
+        c.size(), [&](std::size_t i) { return norm2(c.x[i] - contact_ref_[i]); }, 0.0,
+        Executor::kMinParallelCheap);
     if (df < lim2 && dc < lim2) return false;
   }
   // Reorder the fluid into cell order so neighbours are close in memory.
