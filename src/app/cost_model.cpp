@@ -302,6 +302,12 @@ std::string describe_cost(const CostPrediction& c, int threads) {
       std::snprintf(buf, sizeof buf, "  body %s: %zu particles, rigid\n", b.name.c_str(),
                     b.particles);
     s += buf;
+    // The law factor is the elastic path's with little yield (fitted on 60 steps); a body that
+    // yields throughout iterates its return mapping in every sub-step (docs/validation.md §6
+    // "Cost model": the notched specimen ran 2x the prediction).
+    if (b.elastic && b.law_factor != 1.0)
+      s += "    (its law cost assumes mostly elastic sub-steps: a body that yields throughout "
+           "takes up to 2x longer)\n";
   }
   std::snprintf(buf, sizeof buf,
                 "predicted CPU time on 1 thread: %.3g s (water %.3g s, neighbour lists %.3g s, "

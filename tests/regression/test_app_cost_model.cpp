@@ -1,7 +1,7 @@
 // The cost model of `slamsph check` (app/cost_model.h) against actual runs of shipped cases
 // cut to a short end time: predicted fluid steps and solid sub-steps within 30 % of the
 // steps the run took, and the predicted CPU time, with the constants scaled by this machine's
-// factors (measure_machine_factors: two built-in probe runs), within a factor of 2 of the CPU
+// factors (measure_machine_factors: built-in probe runs), within a factor of 2 of the CPU
 // time the run used on one thread (CPU, not wall, time). Measured in session 10 (machine
 // factors water x0.58-0.59, solid x0.62-0.63): still water +48 %, oscillating plate +11 %,
 // elastic gate +16 %; without the factors +150 %, +70 %, +95 % (the constants were fitted
