@@ -130,14 +130,19 @@ TEST(AppSnapshots, StrainPressurePngsAndSkinProfile) {
 // A run shortened with --end-time before a listed snapshot drops that snapshot with a
 // warning, writes the ones before it and leaves a case.resolved.toml that reads back (it
 // used to complete and then fail, exit 2, when the plot step re-read its resolved case).
-TEST(AppSnapshots, EndTimeBeforeASnapshotDropsItWithAWarning) {
-  const fs::path dir = fs::temp_directory_path() / "slamsph_snapshots_end_time_test";
+// Options of a run of kRing into `dir` (emptied) to `end_time` (run --end-time).
+RunOptions shortened_run(const fs::path& dir, double end_time) {
   fs::remove_all(dir);
   RunOptions opt = silent_options(1);
   opt.write_output = true;
   opt.out_dir = dir.string();
-  opt.end_time = 0.004;
-  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), opt);
+  opt.end_time = end_time;
+  return opt;
+}
+
+TEST(AppSnapshots, EndTimeBeforeASnapshotDropsItWithAWarning) {
+  const fs::path dir = fs::temp_directory_path() / "slamsph_snapshots_end_time_test";
+  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), shortened_run(dir, 0.004));
   ASSERT_EQ(sim.warnings().size(), 1u);
   EXPECT_NE(sim.warnings()[0].find("output.snapshots at 0.006 s"), std::string::npos)
       << sim.warnings()[0];
@@ -157,12 +162,7 @@ TEST(AppSnapshots, EndTimeBeforeASnapshotDropsItWithAWarning) {
 // 13).
 TEST(AppSnapshots, EndTimeBeforeEverySnapshotDropsTheSkinProfileToo) {
   const fs::path dir = fs::temp_directory_path() / "slamsph_snapshots_end_time_all_test";
-  fs::remove_all(dir);
-  RunOptions opt = silent_options(1);
-  opt.write_output = true;
-  opt.out_dir = dir.string();
-  opt.end_time = 0.002;
-  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), opt);
+  Simulation sim(parse_case_string(kRing, "snap_ring.toml"), shortened_run(dir, 0.002));
   ASSERT_EQ(sim.warnings().size(), 1u);
   EXPECT_NE(sim.warnings()[0].find("no snapshot left, output.skin_profile (written at the "
                                    "snapshot times) is dropped too"),
