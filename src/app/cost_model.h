@@ -30,7 +30,7 @@
 //             step over P_b pair entries, each pair from both sides: the sub-step's two passes
 //             run over the pair lists, and a 2 000-particle plate with 3.88 entries per
 //             particle and a 2 514-particle ring with 3.0 measure the same 18 ns per entry on
-//             one thread while their costs per particle differ by 1.3x; c_call the per-call
+//             one thread while their costs per particle differ by 1.4x; c_call the per-call
 //             set-up of the sub-step loop, solid/elastic_substep.cpp, per particle; c_sub
 //             log-linear in N_b between 25 000 and 60 000 particles, where the arrays leave
 //             the caches)
@@ -142,9 +142,9 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 // (100 calls) and 40 sub-steps per call (5 calls). The difference of the two is 39 sub-steps
 // (the sub-step factor), the rest of the one-sub-step call its set-up (the call factor): a
 // run whose bodies take hundreds of sub-steps per fluid step (the fuselage sections) costs
-// almost only sub-steps, one that takes one per step (the oscillating plate) mostly set-up,
-// and the two do not change alike from machine to machine or from hour to hour (one factor
-// for both, session 12, varied 0.64-0.95 and over-predicted the 6-layer skin by 86 %:
+// almost only sub-steps, one that takes one per step (the oscillating plate) a set-up per
+// sub-step, and the two do not change alike from machine to machine or from hour to hour (one
+// factor for both, session 12, varied 0.64-0.95 and over-predicted the 6-layer skin by 86 %:
 // docs/validation.md §6 "Cost model"). A CPU of another speed, or one whose sibling hardware
 // thread is busy, changes the costs of each part alike to first order; `slamsph check` scales
 // the constants by these factors (about 0.3 s).
