@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -307,6 +308,25 @@ TEST_F(CliTest, GoodCasePassesCheckAndRuns) {
   const CliResult r = run("run good.toml --out out --threads 1 --max-steps 2 --quiet");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(work() / "out" / "summary.json"));
+}
+
+// `check --end-time T` predicts the run `run --end-time T` makes: steps in proportion to the
+// end time (the same step), and an --end-time that drops listed snapshots says so.
+TEST_F(CliTest, CheckEndTimePredictsTheShortenedRun) {
+  write_case("good.toml", std::string(kGood) + "\n[output]\nsnapshots = [0.05]\n");
+  auto steps = [](const std::string& out) {
+    const std::size_t at = out.find(" fluid steps");
+    std::size_t b = at;
+    while (b > 0 && std::isdigit(static_cast<unsigned char>(out[b - 1]))) --b;
+    return at == std::string::npos ? -1L : std::stol(out.substr(b, at - b));
+  };
+  const CliResult whole = run("check good.toml --no-machine-probe");
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  const CliResult part = run("check good.toml --no-machine-probe --end-time 0.01");
+  ASSERT_EQ(part.code, 0) << part.err;
+  EXPECT_NE(part.err.find("output.snapshots at 0.05 s"), std::string::npos) << part.err;
+  ASSERT_GT(steps(whole.out), 0) << whole.out;
+  EXPECT_LT(steps(part.out), steps(whole.out)) << part.out;
 }
 
 TEST_F(CliTest, BadCaseFilesExitTwoNamingFileLineKeyAndWriteNothing) {
