@@ -24,7 +24,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const SolidTopology& topo = body.topology;
   const SolidMaterial& mat = body.material;
   SubstepWorkspace& w = body.substep;
-  w.resize(n, topo.pairs.index.size());
+  const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
+  w.resize(n, topo.pairs.index.size(), static_cast<std::size_t>(threads));
   if constexpr (kEulerian) {
     w.vhalf_next.resize(n);
     w.x_next.resize(n);
@@ -78,7 +79,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::hi;
   using simd::lo;
   using simd::v2d;
-  const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   bool swapped = false;  // the current positions are in w.x_next
   exec.run_team(threads, [&](const Team& team) {
     // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
@@ -91,7 +91,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     SubstepPairRev* const rev = w.rev.data();
     Vec2* const keps_k = w.keps.data();
     SubstepViscous* const visc = w.viscous.data();
+    const double* const visc_weight = w.viscous_weight.data();
     const std::uint32_t* const upper = w.upper.data();
+    const std::uint32_t* const lower = w.lower.data();
+    const Vec2* const X = body.X.data();
     double* const stress_power = w.stress_power.data();
     SubstepParticleMats* const mats = w.mats.data();
     // Raw pointers: the compiler then keeps them in registers across the law's call.
@@ -112,6 +115,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     Vec2* const f_hg = body.f_hg.data();
     double* const energy = body.e.data();
     const auto [b, e] = team.share(n);
+    std::uint32_t lower_run = 0;  // slots with j < i in the rows b..i
     for (std::size_t i = b; i < e; ++i) {
       Vec2 gs;
       w.upper[i] = start[i + 1];
@@ -120,19 +124,31 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         if (j > i && w.upper[i] == start[i + 1]) w.upper[i] = k;
         SubstepPairRef& r = ref[k];
         r.g = grad0[k];
-        r.X = body.X[j] - body.X[i];
         r.kappa = kHourglass ? hourglass_pair_stiffness(body, topo, alpha, i, j, k) : 0.0;
-        // The same expressions as viscous_force_on (artificial_viscosity.h).
-        r.viscous_weight = kViscous ? viscous_pair_weight(body, topo, i, k) : 0.0;
         rev[k] = {grad0[reverse[k]], j, reverse[k]};
         gs += grad0[k];
       }
+      lower_run += w.upper[i] - start[i];
+      w.lower[i] = lower_run;
       w.gsum[i] = gs;
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, body.v[i], body.a[i], x, vh, x);
     }
+    w.lower_in_share[static_cast<std::size_t>(team.rank())] = lower_run;
     team.barrier();
+    // w.lower[i] from this share's count to the count over rows 0..i: add the lower slots of
+    // the shares before it (contiguous in rank order). Only this thread reads its own entries
+    // before the next barrier, the others after pass 1.
+    std::uint32_t lower_before = 0;
+    for (int t = 0; t < team.rank(); ++t)
+      lower_before += w.lower_in_share[static_cast<std::size_t>(t)];
+    for (std::size_t i = b; i < e; ++i) {
+      w.lower[i] += lower_before;
+      if constexpr (kViscous)  // the same expressions as viscous_force_on (artificial_viscosity.h)
+        for (std::uint32_t k = upper[i]; k < start[i + 1]; ++k)
+          w.viscous_weight[k - w.lower[i]] = viscous_pair_weight(body, topo, i, k);
+    }
     for (int step = 0; step < steps; ++step) {
       if constexpr (eulerian) {  // current pairs of the switched particles at the drifted positions
         if (team.leader()) build_eulerian_pairs(body, x);
@@ -147,6 +163,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         // its F comes from its current neighbours.
         const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
         const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
+        // i's pairs with j > i, once per pair: k − lower[i] in w.viscous (SubstepWorkspace).
+        SubstepViscous* const visc_i = visc + (ku - lower[i]);
+        const double* const weight_i = visc_weight + (ku - lower[i]);
         for (std::uint32_t k = k0; k < ku; ++k) {
           const SubstepPairRef& r = ref[k];
           const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
@@ -172,12 +191,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             Vec2 f;
             double q = 0.0;
             if (pi != 0.0) {
-              const double s = pi * r.viscous_weight / norm(xij);
+              const double s = pi * weight_i[k - ku] / norm(xij);
               f = s * xij;
               q = -0.5 * s * dot(xij, vij);
             }
-            visc[k] = {f, q};
-            visc[reverse[k]] = {-f, q};
+            visc_i[k - ku] = {f, q};
           }
         }
         const Mat2 F = simd::mat(Fc);
@@ -214,7 +232,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           simd::Cols Gi;
           for (std::uint32_t k = k0; k < k1; ++k) {
             const SubstepPairRef& r = ref[k];
-            const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
+            // X_ij as the set-up formed it (hourglass_control.h), from i's and j's X.
+            const v2d Xij = simd::load(X[index[k]]) - simd::load(X[i]), Xx = lo(Xij), Xy = hi(Xij);
             const v2d keps =
                 simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
             simd::store(keps_k[k], keps);
@@ -235,18 +254,34 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       for (std::size_t i = b; i < e; ++i) {
         v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
         double heat = 0.0;
-        for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-          const SubstepPairRev& r = rev[k];
+        // Pair k's terms but the viscous one, which the two loops below add.
+        auto stress_hourglass = [&](std::uint32_t k, const SubstepPairRev& r) {
           const SubstepParticleMats& mj = mats[r.j];
           const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
           fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
-          if constexpr (kViscous) {
-            fav += simd::load(visc[k].f);
-            heat += visc[k].q;
-          }
           if constexpr (kHourglass) {
             grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
             grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
+          }
+        };
+        const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
+        for (std::uint32_t k = k0; k < ku; ++k) {
+          const SubstepPairRev& r = rev[k];
+          stress_hourglass(k, r);
+          if constexpr (kViscous) {
+            // j < i: the term j stored for the pair (slot r.reverse of j's row), whose force
+            // on i is −f (fav − f rounds as fav + (−f)).
+            const SubstepViscous& vt = visc[r.reverse - lower[r.j]];
+            fav -= simd::load(vt.f);
+            heat += vt.q;
+          }
+        }
+        const SubstepViscous* const visc_i = visc + (ku - lower[i]);
+        for (std::uint32_t k = ku; k < k1; ++k) {
+          stress_hourglass(k, rev[k]);
+          if constexpr (kViscous) {
+            fav += simd::load(visc_i[k - ku].f);
+            heat += visc_i[k - ku].q;
           }
         }
         const SubstepParticleMats& mi = mats[i];

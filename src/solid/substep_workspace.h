@@ -11,16 +11,15 @@
 
 namespace slamsph {
 
-// Reference constants of pair k = (i, j) read by pass 1 (F, Ḟ, hourglass moment, viscous
-// terms), in one record so that the pass streams one array; j comes from the topology's
-// index. 48 bytes: the pair smoothing length and density of the viscous term are formed from
-// the per-particle h and ρ0 of i and j (j is near i in the stored order, so in cache), not
-// stored per pair.
+// Reference constants of pair k = (i, j) read by pass 1 (F, Ḟ, hourglass moment), in one
+// record so that the pass streams one array; j comes from the topology's index. 24 bytes:
+// what is formed exactly from per-particle arrays is not stored per pair (j is near i in the
+// stored order, so its entries are in cache): X_j − X_i from X, the pair smoothing length
+// and density of the viscous term from h and ρ0; the viscous weight is per pair, not per
+// slot (SubstepWorkspace::viscous_weight).
 struct SubstepPairRef {
-  Vec2 g;                 // g_ij = topology.grad0[k] [1/m]
-  Vec2 X;                 // X_j − X_i [m]
-  double kappa;           // hourglass pair stiffness κ_ij [N/m^3·m^2]
-  double viscous_weight;  // |c_ij| of the artificial viscosity [m]
+  Vec2 g;        // g_ij = topology.grad0[k] [1/m]
+  double kappa;  // hourglass pair stiffness κ_ij [N/m^3·m^2]
 };
 // Those read by pass 2 (forces).
 struct SubstepPairRev {
@@ -28,8 +27,8 @@ struct SubstepPairRev {
   std::uint32_t j;
   std::uint32_t reverse;
 };
-// Viscous pair term of the current sub-step: force on i from j (−f of the reverse pair) and
-// the heating rate of each particle from the pair [W/m].
+// Viscous pair term of the current sub-step, of pair (i, j) with i < j: force on i from j
+// (on j from i: −f) and the heating rate of each of the two particles from the pair [W/m].
 struct SubstepViscous {
   Vec2 f;
   double q = 0.0;
@@ -55,15 +54,22 @@ struct SubstepWorkspace {
   std::vector<SubstepPairRef> ref;
   std::vector<SubstepPairRev> rev;
   // Per pair, of the current sub-step.
-  std::vector<Vec2> keps;               // κ_ij ε_ij (hourglass)
+  std::vector<Vec2> keps;  // κ_ij ε_ij (hourglass)
+  // Once per pair {i, j}, not per slot (the lower particle's term serves both), at u = k −
+  // lower[i] for the slot k of i's row with j > i: the slots with j > i in CSR order. Pass 1
+  // streams them, pass 2 reads i's own ones in order and those of its pairs with j < i, at
+  // slot reverse[k] of j's row, from the rows of the nearby j.
+  std::vector<double> viscous_weight;   // |c_ij| of the artificial viscosity, per call [m]
   std::vector<SubstepViscous> viscous;  // viscous pair terms
   // Per particle.
-  std::vector<std::uint32_t> upper;       // first k of i's row with j > i (rows are sorted)
-  std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
-  std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
-  std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
-  std::vector<SubstepPower> power;        // of the sub-step just completed
-  std::vector<Vec2> vhalf;                // half-step velocity
+  std::vector<std::uint32_t> upper;           // first k of i's row with j > i (rows are sorted)
+  std::vector<std::uint32_t> lower;           // slots with j < i in the rows 0..i (lower slots)
+  std::vector<std::uint32_t> lower_in_share;  // per thread of the team: its rows' lower slots
+  std::vector<Vec2> gsum;                     // Σ_j g_ij over i's pairs, per call [1/m]
+  std::vector<SubstepParticleMats> mats;      // V0 P and G by columns
+  std::vector<Vec2> fext;                     // fluid force + weight, held over the call [N/m]
+  std::vector<SubstepPower> power;            // of the sub-step just completed
+  std::vector<Vec2> vhalf;                    // half-step velocity
   // With an Eulerian switch only (otherwise updated in place): v½ and x after the next kick
   // and drift, swapped with vhalf and body.x after pass 2.
   std::vector<Vec2> vhalf_next;
@@ -71,12 +77,16 @@ struct SubstepWorkspace {
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
 
-  void resize(std::size_t particles, std::size_t pairs) {
+  void resize(std::size_t particles, std::size_t pairs, std::size_t threads) {
     ref.resize(pairs);
     rev.resize(pairs);
     keps.resize(pairs);
-    viscous.resize(pairs);
+    // Every pair is stored from both sides (topology.pair_reverse), so pairs / 2 of them.
+    viscous_weight.resize(pairs / 2);
+    viscous.resize(pairs / 2);
     upper.resize(particles);
+    lower.resize(particles);
+    lower_in_share.resize(threads);
     stress_power.resize(particles);
     gsum.resize(particles);
     mats.resize(particles);
