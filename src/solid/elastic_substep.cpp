@@ -161,7 +161,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         if (team.leader()) build_eulerian_pairs(body, x);
         team.barrier();
       }
-      const bool more = step + 1 < steps;
       // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
       // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
       // rounding of the Vec2 / Mat2 forms.
@@ -222,13 +221,14 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           }
         }
         SubstepParticleMats& mi = mats[i];
-        // Without an Eulerian switch P is body state only at the end of the call: P_old is
-        // the one in mats (the previous sub-step's, or the body's at the first).
+        // Without an Eulerian switch P is body state only at the end of the call (copied
+        // from mats after the last sub-step): P_old is the one in mats (the previous
+        // sub-step's, or the body's at the first).
         const Mat2 F_old = Fb[i];
         const Mat2 P_old = eulerian ? Pb[i] : simd::mat({simd::load(mi.p_c0), simd::load(mi.p_c1)});
         Fb[i] = Fm;
         const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-        if (eulerian || !more) Pb[i] = P;
+        if constexpr (eulerian) Pb[i] = P;
         if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
         if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
@@ -241,9 +241,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         if constexpr (kHourglass) {
           // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
           simd::Cols Gi;
+          const v2d Xi = simd::load(X[i]);  // hoisted: the compiler cannot (keps_k may alias)
           for (std::uint32_t k = k0; k < k1; ++k) {
             // X_ij as the set-up formed it (hourglass_control.h), from i's and j's X.
-            const v2d Xij = simd::load(X[index[k]]) - simd::load(X[i]), Xx = lo(Xij), Xy = hi(Xij);
+            const v2d Xij = simd::load(X[index[k]]) - Xi, Xx = lo(Xij), Xy = hi(Xij);
             const v2d keps =
                 simd::splat(kappa[k]) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
             simd::store(keps_k[k], keps);
@@ -260,6 +261,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       // kick and drift. The pair terms of i's own side, V0_i P_i g_ij and G_i g_ij, are
       // summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum, per call): the same forces
       // at a different rounding (tests/unit/test_solid_substep.cpp).
+      const bool more = step + 1 < steps;
       for (std::size_t i = b; i < e; ++i) {
         v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
         double heat = 0.0;
@@ -335,6 +337,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       }
     }
     if (team.leader() && steps > 0) account();
+    // Without an Eulerian switch the last P is in mats (this thread's own entries).
+    if constexpr (!eulerian)
+      if (steps > 0)
+        for (std::size_t i = b; i < e; ++i)
+          Pb[i] = simd::mat({simd::load(mats[i].p_c0), simd::load(mats[i].p_c1)});
   });
   if (swapped) std::swap(body.x, w.x_next);
   body.history.updates += static_cast<std::uint64_t>(steps);
