@@ -24,8 +24,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const SolidTopology& topo = body.topology;
   const SolidMaterial& mat = body.material;
   SubstepWorkspace& w = body.substep;
-  const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
-  w.resize(n, topo.pairs.index.size(), static_cast<std::size_t>(threads));
+  w.resize(n, topo.pairs.index.size());
   if constexpr (kEulerian) {
     w.vhalf_next.resize(n);
     w.x_next.resize(n);
@@ -57,7 +56,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       diss -= p.viscous;
       hg -= p.hourglass;
       ext += p.external;
-      if (body.clamped[i]) grip -= w.clamp_power[i];
+      if (body.clamped[i]) grip -= p.clamp;
     }
     body.dissipated += h * diss;
     body.hourglass_work += h * hg;
@@ -79,6 +78,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::hi;
   using simd::lo;
   using simd::v2d;
+  const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   bool swapped = false;  // the current positions are in w.x_next
   exec.run_team(threads, [&](const Team& team) {
     // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
@@ -87,13 +87,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     std::span<Vec2> x = body.x, vh = w.vhalf;
     std::span<Vec2> xn = eulerian ? std::span<Vec2>(w.x_next) : x;
     std::span<Vec2> vhn = eulerian ? std::span<Vec2>(w.vhalf_next) : vh;
-    double* const kappa = w.kappa.data();
+    SubstepPairRef* const ref = w.ref.data();
+    SubstepPairRev* const rev = w.rev.data();
     Vec2* const keps_k = w.keps.data();
     SubstepViscous* const visc = w.viscous.data();
-    const double* const visc_weight = w.viscous_weight.data();
     const std::uint32_t* const upper = w.upper.data();
-    const std::uint32_t* const lower = w.lower.data();
-    const Vec2* const X = body.X.data();
     double* const stress_power = w.stress_power.data();
     SubstepParticleMats* const mats = w.mats.data();
     // Raw pointers: the compiler then keeps them in registers across the law's call.
@@ -114,48 +112,27 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     Vec2* const f_hg = body.f_hg.data();
     double* const energy = body.e.data();
     const auto [b, e] = team.share(n);
-    std::uint32_t lower_run = 0;  // slots with j < i in the rows b..i
-    bool uniform_share = true;    // h and ρ0 of the share those of particle 0
     for (std::size_t i = b; i < e; ++i) {
       Vec2 gs;
       w.upper[i] = start[i + 1];
       for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
         const std::uint32_t j = index[k];
         if (j > i && w.upper[i] == start[i + 1]) w.upper[i] = k;
-        if constexpr (kHourglass) kappa[k] = hourglass_pair_stiffness(body, topo, alpha, i, j, k);
+        SubstepPairRef& r = ref[k];
+        r.g = grad0[k];
+        r.X = body.X[j] - body.X[i];
+        r.kappa = kHourglass ? hourglass_pair_stiffness(body, topo, alpha, i, j, k) : 0.0;
+        // The same expressions as viscous_force_on (artificial_viscosity.h).
+        r.viscous_weight = kViscous ? viscous_pair_weight(body, topo, i, k) : 0.0;
+        rev[k] = {grad0[reverse[k]], j, reverse[k]};
         gs += grad0[k];
       }
-      lower_run += w.upper[i] - start[i];
-      w.lower[i] = lower_run;
-      uniform_share = uniform_share && hp[i] == hp[0] && rho0[i] == rho0[0];
-      const simd::Cols Pc = simd::cols(Pb[i]);  // the first sub-step's P_old
-      simd::store(mats[i].p_c0, Pc.c0);
-      simd::store(mats[i].p_c1, Pc.c1);
       w.gsum[i] = gs;
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, body.v[i], body.a[i], x, vh, x);
     }
-    w.share_info[static_cast<std::size_t>(team.rank())] = {lower_run, uniform_share};
     team.barrier();
-    // w.lower[i] from this share's count to the count over rows 0..i: add the lower slots of
-    // the shares before it (contiguous in rank order). Only this thread reads its own entries
-    // before the next barrier, the others after pass 1.
-    std::uint32_t lower_before = 0;
-    for (int t = 0; t < team.rank(); ++t)
-      lower_before += w.share_info[static_cast<std::size_t>(t)].lower;
-    // With one h and one ρ0 (every body built from one spacing and one material) the pair
-    // values 0.5 (h_i + h_j) and 0.5 (ρ0_i + ρ0_j) are h and ρ0 exactly: no gathers.
-    bool uniform = n > 0;
-    for (int t = 0; t < team.size(); ++t)
-      uniform = uniform && w.share_info[static_cast<std::size_t>(t)].uniform;
-    const double h_all = n > 0 ? hp[0] : 0.0, rho0_all = n > 0 ? rho0[0] : 0.0;
-    for (std::size_t i = b; i < e; ++i) {
-      w.lower[i] += lower_before;
-      if constexpr (kViscous)  // the same expressions as viscous_force_on (artificial_viscosity.h)
-        for (std::uint32_t k = upper[i]; k < start[i + 1]; ++k)
-          w.viscous_weight[k - w.lower[i]] = viscous_pair_weight(body, topo, i, k);
-    }
     for (int step = 0; step < steps; ++step) {
       if constexpr (eulerian) {  // current pairs of the switched particles at the drifted positions
         if (team.leader()) build_eulerian_pairs(body, x);
@@ -170,18 +147,17 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         // its F comes from its current neighbours.
         const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
         const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
-        // i's pairs with j > i, once per pair: k − lower[i] in w.viscous (SubstepWorkspace).
-        SubstepViscous* const visc_i = visc + (ku - lower[i]);
-        const double* const weight_i = visc_weight + (ku - lower[i]);
         for (std::uint32_t k = k0; k < ku; ++k) {
-          const v2d gk = simd::load(grad0[k]), gx = lo(gk), gy = hi(gk);
+          const SubstepPairRef& r = ref[k];
+          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
           simd::add_outer(Fc, simd::load(x[index[k]]) - xi, gx, gy);
           simd::add_outer(Fdc, simd::load(vh[index[k]]) - vi, gx, gy);
         }
         for (std::uint32_t k = ku; k < k1; ++k) {
+          const SubstepPairRef& r = ref[k];
           const std::uint32_t j = index[k];
           const v2d xj = simd::load(x[j]), vj = simd::load(vh[j]);
-          const v2d gk = simd::load(grad0[k]), gx = lo(gk), gy = hi(gk);
+          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
           simd::add_outer(Fc, xj - xi, gx, gy);
           simd::add_outer(Fdc, vj - vi, gx, gy);
           if constexpr (kViscous) {
@@ -191,17 +167,17 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             Vec2 xij, vij;
             simd::store(xij, xi - xj);
             simd::store(vij, vi - vj);
-            const double hij = uniform ? h_all : 0.5 * (hp[i] + hp[j]);
-            const double rhoij = uniform ? rho0_all : 0.5 * (rho0[i] + rho0[j]);
-            const double pi = monaghan_pi(vij, xij, hij, rhoij, c, av_alpha, av_beta);
+            const double pi = monaghan_pi(vij, xij, 0.5 * (hp[i] + hp[j]),
+                                          0.5 * (rho0[i] + rho0[j]), c, av_alpha, av_beta);
             Vec2 f;
             double q = 0.0;
             if (pi != 0.0) {
-              const double s = pi * weight_i[k - ku] / norm(xij);
+              const double s = pi * r.viscous_weight / norm(xij);
               f = s * xij;
               q = -0.5 * s * dot(xij, vij);
             }
-            visc_i[k - ku] = {f, q};
+            visc[k] = {f, q};
+            visc[reverse[k]] = {-f, q};
           }
         }
         const Mat2 F = simd::mat(Fc);
@@ -220,33 +196,27 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             Fdot = Fdot * body.F_rebase[i];
           }
         }
-        SubstepParticleMats& mi = mats[i];
-        // Without an Eulerian switch P is body state only at the end of the call (copied
-        // from mats after the last sub-step): P_old is the one in mats (the previous
-        // sub-step's, or the body's at the first).
-        const Mat2 F_old = Fb[i];
-        const Mat2 P_old = eulerian ? Pb[i] : simd::mat({simd::load(mi.p_c0), simd::load(mi.p_c1)});
+        const Mat2 F_old = Fb[i], P_old = Pb[i];
         Fb[i] = Fm;
         const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-        if constexpr (eulerian) Pb[i] = P;
+        Pb[i] = P;
         if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
         if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
         // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
-        stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / (uniform ? rho0_all : rho0[i]);
-        // The stress of the TL pair force: P, or P Cᵀ after an Eulerian switch
-        // (tl_pair_force.h); pass 2 multiplies it by V0 (the rounding of V0 P).
-        const simd::Cols Pk = simd::cols(eulerian ? w.P_kin[i] : P);
-        simd::store(mi.p_c0, Pk.c0);
-        simd::store(mi.p_c1, Pk.c1);
+        stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
+        SubstepParticleMats& mi = mats[i];
+        // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+        const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
+        simd::store(mi.vp_c0, VP.c0);
+        simd::store(mi.vp_c1, VP.c1);
         if constexpr (kHourglass) {
           // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
           simd::Cols Gi;
-          const v2d Xi = simd::load(X[i]);  // hoisted: the compiler cannot (keps_k may alias)
           for (std::uint32_t k = k0; k < k1; ++k) {
-            // X_ij as the set-up formed it (hourglass_control.h), from i's and j's X.
-            const v2d Xij = simd::load(X[index[k]]) - Xi, Xx = lo(Xij), Xy = hi(Xij);
+            const SubstepPairRef& r = ref[k];
+            const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
             const v2d keps =
-                simd::splat(kappa[k]) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
+                simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
             simd::store(keps_k[k], keps);
             simd::add_outer(Gi, keps, Xx, Xy);
           }
@@ -265,45 +235,25 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       for (std::size_t i = b; i < e; ++i) {
         v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
         double heat = 0.0;
-        // Pair k's terms but the viscous one, which the two loops below add.
-        // g_ji from the reverse slot in j's row (j is near i, so that row is in cache).
-        auto stress_hourglass = [&](std::uint32_t k, std::uint32_t j, std::uint32_t kr) {
-          const SubstepParticleMats& mj = mats[j];
-          const v2d gr = simd::load(grad0[kr]), gx = lo(gr), gy = hi(gr);
-          const v2d vj = simd::splat(V0[j]);
-          fs += (vj * simd::load(mj.p_c0)) * gx + (vj * simd::load(mj.p_c1)) * gy;
+        for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
+          const SubstepPairRev& r = rev[k];
+          const SubstepParticleMats& mj = mats[r.j];
+          const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
+          fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
+          if constexpr (kViscous) {
+            fav += simd::load(visc[k].f);
+            heat += visc[k].q;
+          }
           if constexpr (kHourglass) {
             grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
-            grad += simd::load(keps_k[k]) - simd::load(keps_k[kr]);
-          }
-        };
-        const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
-        for (std::uint32_t k = k0; k < ku; ++k) {
-          const std::uint32_t j = index[k], kr = reverse[k];
-          stress_hourglass(k, j, kr);
-          if constexpr (kViscous) {
-            // j < i: the term j stored for the pair (slot kr of j's row), whose force on i is
-            // −f (fav − f rounds as fav + (−f)).
-            const SubstepViscous& vt = visc[kr - lower[j]];
-            fav -= simd::load(vt.f);
-            heat += vt.q;
-          }
-        }
-        const SubstepViscous* const visc_i = visc + (ku - lower[i]);
-        for (std::uint32_t k = ku; k < k1; ++k) {
-          stress_hourglass(k, index[k], reverse[k]);
-          if constexpr (kViscous) {
-            fav += simd::load(visc_i[k - ku].f);
-            heat += visc_i[k - ku].q;
+            grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
           }
         }
         const SubstepParticleMats& mi = mats[i];
         const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
         Vec2 fsv, favv, fhg;
         simd::store(favv, fav);
-        const v2d v0i = simd::splat(V0[i]);
-        simd::store(fsv,
-                    (v0i * simd::load(mi.p_c0)) * gsx + (v0i * simd::load(mi.p_c1)) * gsy - fs);
+        simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
         if constexpr (kHourglass)
           simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
         if constexpr (eulerian) {
@@ -318,8 +268,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const Vec2 fi = fsv + favv + fhg;
         const Vec2 ai = clamped[i] ? Vec2{} : (fi + fext[i]) / m[i];
         const Vec2 vi = clamped[i] ? clamp_v[i] : vh[i] + hh * ai;
-        w.power[i] = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i])};
-        if (clamped[i]) w.clamp_power[i] = dot(fi + fext[i], clamp_v[i]);
+        w.power[i] = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
+                      clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
         if (eulerian || !more) {
           f_av[i] = favv;
           f_hg[i] = fhg;
@@ -337,11 +287,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       }
     }
     if (team.leader() && steps > 0) account();
-    // Without an Eulerian switch the last P is in mats (this thread's own entries).
-    if constexpr (!eulerian)
-      if (steps > 0)
-        for (std::size_t i = b; i < e; ++i)
-          Pb[i] = simd::mat({simd::load(mats[i].p_c0), simd::load(mats[i].p_c1)});
   });
   if (swapped) std::swap(body.x, w.x_next);
   body.history.updates += static_cast<std::uint64_t>(steps);

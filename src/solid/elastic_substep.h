@@ -7,41 +7,40 @@
 //   pass 1 (particle i): F_i and Ḟ_i need every neighbour's drifted position and half-step
 //          velocity; then P_i (law), the stress power P̄:Ḟ/ρ0 and the hourglass moment G_i
 //          with κ ε of i's pairs. The viscous pair terms depend on x and v½ only, so they
-//          are computed here too, each pair once, by its lower particle, and stored once per
-//          pair (the force on j is the exact negative of the force on i, which pass 2 of j
-//          subtracts, and the heat the same number, so the per-particle sums below are those
-//          of viscous_force_on bit for bit, at half the square roots and divisions);
-//   pass 2 (particle i): the forces need V0_j P_j, G_j and κ ε of the reversed pairs of every
-//          neighbour; stress, viscous and hourglass sums in one sweep over i's pairs (those with
-//          j < i, then j > i; each sum in its own accumulator); then a_i, the second half kick, the
-//          internal energy, i's powers for the energy bookkeeping and, for the next sub-step, the
-//          first half kick and drift. Pass 2 reads no neighbour's x or v½, so the kick and drift
-//          update them in place (with an Eulerian switch, whose pair forces read the neighbours'
-//          current x and v½, into second buffers). f_av, f_hg, f_int, a and v are stored at the
-//          last sub-step only: in between they live in registers and the per-particle powers
-//          (memory traffic: the 60 000-particle ring does not fit in the caches).
-// Each pass writes only its own particles' entries (a pair's viscous term is i's, the lower one),
-// so results are bit-identical for any thread count. The pair terms of i's own side in pass 2,
-// V0_i P_i g_ij (stress) and G_i g_ij (hourglass), are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij
-// with Σ_j g_ij per particle and call (pass 1 stores P_i and G_i per particle; pass 2 forms V0 P,
-// which rounds as the operators' V0 P), so the forces equal those of the standalone operators
-// (tl_pair_force.h, artificial_viscosity.h, hourglass_control.h, deformation_gradient.h) to
-// round-off, not bit for bit (tests/unit/test_solid_substep.cpp: relative 1e-12). The pair loops
-// use two-lane vectors (core/simd2.h; F, Ḟ and G by columns), which round as the scalar forms. With
-// a team of two or more threads the whole call is one parallel region with 2 barriers per sub-step,
-// plus one after the first kick and drift (Executor::sync_counts). The 60 000-particle ring of
-// bench/bench_solid.cpp exceeds the last-level cache, so the passes store and stream as few bytes
-// as they can (solid/substep_workspace.h): g_ij, j and the reverse slot come from the topology's
-// CSR arrays (g_ji of pass 2 from the nearby row of j), X_ij from X, the pair h and ρ0 from i's and
-// j's (the body's when uniform); the hourglass stiffness κ_ij (per slot) and the viscous weight
-// |c_ij| (per pair) are computed once per call, not per sub-step; without an Eulerian switch P
-// lives in the per-particle record pass 2 gathers and body.P is written at the last sub-step only.
-// The loops are instantiated per law, per on/off state of hourglass control and viscosity and per
-// Eulerian state (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and external
-// work) is summed serially in particle order, from the per-particle powers of pass 2, by the team's
-// first thread while the others run pass 1 of the next sub-step, so it too does not depend on the
-// thread count. All of this is bit-identical to the sub-step before these storage changes
-// (docs/validation.md, "Solid sub-step").
+//          are computed here too, each pair once, by its lower particle, and stored for both
+//          slots of the pair (the force on j is the exact negative of the force on i and the
+//          heat the same number, so the per-particle sums below are those of
+//          viscous_force_on bit for bit, at half the square roots and divisions);
+//   pass 2 (particle i): the forces need V0_j P_j, G_j and κ ε of the reversed pairs of
+//          every neighbour; stress, viscous and hourglass sums in one loop over i's pairs
+//          (each in its own accumulator); then a_i, the second half kick, the internal energy,
+//          i's powers for the energy bookkeeping and, for the next sub-step, the first half
+//          kick and drift. Pass 2 reads no neighbour's x or v½, so the kick and drift update
+//          them in place (with an Eulerian switch, whose pair forces read the neighbours'
+//          current x and v½, into second buffers). f_av, f_hg, f_int, a and v are stored at
+//          the last sub-step only: in between they live in registers and the per-particle
+//          powers (memory traffic: the 60 000-particle ring does not fit in the caches).
+// Each pass writes only its own particles' entries, apart from the viscous terms of pass 1,
+// whose second slot (j, i) no other particle writes, so results are bit-identical for any
+// thread count. The pair terms of i's own side in pass 2, V0_i P_i g_ij (stress) and
+// G_i g_ij (hourglass), are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij with Σ_j g_ij per
+// particle and call, and pass 1 stores V0_i P_i per particle, so the forces equal those of
+// the standalone operators (tl_pair_force.h, artificial_viscosity.h, hourglass_control.h,
+// deformation_gradient.h) to round-off, not bit for bit (tests/unit/test_solid_substep.cpp:
+// relative 1e-12). The pair loops use two-lane vectors (core/simd2.h; F, Ḟ and G by
+// columns), which round as the scalar forms. With a team of two or more threads the whole
+// call is one parallel region with 2 barriers per sub-step, plus one after the first kick
+// and drift (Executor::sync_counts). Reference pair constants in CSR order (g_ij, X_ij,
+// hourglass stiffness κ_ij and viscous weight |c_ij| in one 48-byte record per pair for
+// pass 1, j from the topology's index, the pair h and ρ0 from i's and j's; g_ji with j and
+// the reverse slot in another for pass 2) are computed once per call, not per sub-step, so
+// the pair loops read them without indirection; the loops are instantiated per law, per
+// on/off state of hourglass control and viscosity and per Eulerian state
+// (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and external work)
+// is summed serially in particle order, from the per-particle powers of pass 2, by the
+// team's first thread while the others run pass 1 of the next sub-step, so it too does not
+// depend on the thread count. All of this is bit-identical to the sub-step before these
+// storage changes (docs/validation.md, "Solid sub-step").
 #pragma once
 #include <cstddef>
 
