@@ -116,10 +116,11 @@ bool surely_elastic(const JohnsonCookModel& jc, double q, double T) {
 
 // The root Δ ∈ [0, q/(3μ)] (r(0) > 0 ≥ r(q/3μ) = −σ_y): Newton steps kept inside the
 // bracket, bisection when a step leaves it or the slope is not finite (ε̄p = 0 with n < 1).
-double solve_consistency(const Consistency& r) {
+// r0 = r(0), which the caller has evaluated to decide that the step yields.
+double solve_consistency(const Consistency& r, double r0) {
   double lo = 0.0, hi = r.q / (3.0 * r.mu);
   double dr = 0.0;
-  double d = std::min(r(0.0, dr) / (3.0 * r.mu), hi);
+  double d = std::min(r0 / (3.0 * r.mu), hi);
   for (int it = 0; it < 200; ++it) {
     const double res = r(d, dr);
     if (res > 0.0)
@@ -149,7 +150,10 @@ KirchhoffStress JohnsonCook::update_kirchhoff(const Mat2& F, double Fzz, double 
     const Consistency r{jc, p_.mu, p_.rho0, q, ep, T, dt};
     double dr = 0.0;
     double d = 0.0;
-    if (!surely_elastic(jc, q, T) && r(0.0, dr) > 0.0) d = solve_consistency(r);
+    if (!surely_elastic(jc, q, T)) {
+      const double r0 = r(0.0, dr);
+      if (r0 > 0.0) d = solve_consistency(r, r0);
+    }
     double q_new = q;
     if (d > 0.0) {
       // Radial return (Simo & Hughes 1998, Box 9.1) with the Δε̄p of the JC consistency.
