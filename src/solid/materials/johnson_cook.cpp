@@ -119,7 +119,7 @@ bool surely_elastic(const JohnsonCookModel& jc, double q, double T) {
 // n < 1). In ln Δ the rate term C ln(Δ/(Δt ε̇0)) is linear: Newton in Δ itself, started at the
 // rate-free return r(0)/3μ (right of the root, r convex), jumps to just above 0, where the
 // rate term's slope C σ/Δ is huge, and climbs back a factor of a few per iteration (13.3
-// iterations per yielding update in the notched specimen; ~4 in ln Δ). r0 = r(0), which the
+// iterations per yielding update in the notched specimen; 6.4 in ln Δ). r0 = r(0), which the
 // caller has evaluated to decide that the step yields.
 double solve_consistency(const Consistency& r, double r0) {
   double lo = 0.0, hi = r.q / (3.0 * r.mu);
