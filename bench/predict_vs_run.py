@@ -6,8 +6,9 @@ measured by its built-in probes, src/app/cost_model.h), then `slamsph run CASE -
 with VTK off, to the case's end time or to --end-time; prints the predicted and measured
 fluid steps, solid sub-steps, neighbour rebuilds, wall time of the time stepping (summary.json
 wall_seconds; the process's wall time with start-up and plots in brackets), the solid phase
-and (1 thread) CPU time, and the relative error of the stepping's wall time. The machine should be idle: the prediction is for an idle
-machine of this kind (the load average before each run is printed). Usage:
+and (1 thread) CPU time, and the relative error of the stepping's wall time. The machine
+should be idle: the prediction is for an idle machine of this kind (the load average before
+each run is printed). Usage:
 
   bench/predict_vs_run.py BUILD/slamsph [--threads T ...] [--end-time S] [--set KEY=VALUE ...]
                           [CASE.toml ...]
@@ -66,17 +67,6 @@ def measure(slamsph, case, threads, extra, out):
     return dict(wall=wall, cpu=cpu, summary=s)
 
 
-def find(d, *keys):
-    """The first of `keys` found in summary dict d (nested lookups with '.')."""
-    for k in keys:
-        v = d
-        for part in k.split("."):
-            v = v.get(part) if isinstance(v, dict) else None
-        if v is not None:
-            return v
-    return None
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("slamsph")
@@ -103,10 +93,9 @@ def main():
                 p = predict(a.slamsph, case, t, extra)
                 m = measure(a.slamsph, case, t, extra, os.path.join(tmp, "run"))
                 s = m["summary"]
-                steps = find(s, "steps", "fluid_steps")
-                subs = find(s, "solid_substeps", "substeps")
-                rebuilds = find(s, "neighbour_rebuilds", "rebuilds")
-                solid = find(s, "time_split_s.solid_substeps") or 0.0
+                steps, subs = s["fluid_steps"], s["solid_substeps"]
+                rebuilds = s["neighbour_rebuilds"]
+                solid = s["time_split_s"]["solid_substeps"]
                 if a.keep:
                     os.makedirs(a.keep, exist_ok=True)
                     stem = os.path.splitext(os.path.basename(case))[0]
@@ -114,7 +103,7 @@ def main():
                         json.dump(s, f, indent=1)
                 # The model predicts the time stepping (summary.json wall_seconds), not the
                 # start-up (particles, lists) or the plots at the end (the process column).
-                stepping = find(s, "wall_seconds") or m["wall"]
+                stepping = s["wall_seconds"]
                 err = (p["wall"] - stepping) / stepping
                 name = os.path.relpath(case, ROOT) + "".join(f" {kv}" for kv in a.set)
                 pred_subs = p["substeps_per_step"] * p["steps"]

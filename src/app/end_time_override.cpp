@@ -32,7 +32,7 @@ std::vector<std::string> override_end_time(CaseConfig& cfg, double end_time) {
   if (snaps.empty()) {
     std::string also;
     if (!cfg.output.skin_profile.empty()) also += "output.skin_profile";
-    if (cfg.output.snapshot_view.max.x > cfg.output.snapshot_view.min.x)
+    if (cfg.output.has_snapshot_view())
       also += also.empty() ? "output.snapshot_view" : " and output.snapshot_view";
     if (!also.empty())
       w += "; with no snapshot left, " + also + " (written at the snapshot times) " +

@@ -73,7 +73,7 @@ void SnapshotWriter::write(const FsiStepper& st, std::size_t index) {
   // The view: the case's, else around the elastic bodies (else every body), clipped to
   // the domain.
   Box view = cfg_.output.snapshot_view;
-  if (!(view.max.x > view.min.x)) {
+  if (!cfg_.output.has_snapshot_view()) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     Box bb{{inf, inf}, {-inf, -inf}};
     for (const bool elastic_only : {true, false}) {

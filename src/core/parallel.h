@@ -131,8 +131,8 @@ class Executor {
   // phases) but 40-60 µs when one has gone to sleep during a longer serial phase (a futex
   // wake of an idle virtual CPU, measured on this machine kind: the displacement check of a
   // 1 872-particle plate after its one-thread sub-step took 43 µs per step on 2 threads and
-  // 2 µs on 1, session 13), while 16 384 such items take ~30 µs on one thread. Results are
-  // the same either way (docs/validation.md §6).
+  // 2 µs on 1, session 13), while 16 384 such items at a few ns each take tens of µs on one
+  // thread. Results are the same either way (docs/validation.md §6).
   static constexpr std::size_t kMinParallelCheap = 16384;
   template <class F>
   void for_each(std::size_t n, F&& f, std::size_t min_items = kMinParallel) const {

@@ -169,6 +169,7 @@ struct OutputConfig {
   std::vector<double> snapshots;
   // The region drawn [m]; empty (min = max) = around the elastic bodies.
   Box snapshot_view;
+  bool has_snapshot_view() const { return snapshot_view.max.x > snapshot_view.min.x; }
   // Body whose skin mid-surface P_yy against the angle is written at each snapshot time
   // ("" = none; a ring-shaped elastic body).
   std::string skin_profile;

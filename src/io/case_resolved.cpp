@@ -302,7 +302,7 @@ std::string resolved_case_toml(const CaseConfig& c) {
   }
   if (!out.skin_profile.empty()) o << "skin_profile = " << q(out.skin_profile) << "\n";
   const Box& view = out.snapshot_view;
-  if (view.max.x > view.min.x)
+  if (out.has_snapshot_view())
     o << "snapshot_view = { min = " << v2(view.min) << ", max = " << v2(view.max) << " }  # [m]\n";
   for (const auto& p : out.probes) {
     o << "\n[[output.probe]]\n";

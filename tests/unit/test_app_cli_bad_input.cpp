@@ -310,8 +310,8 @@ TEST_F(CliTest, GoodCasePassesCheckAndRuns) {
   EXPECT_TRUE(fs::exists(work() / "out" / "summary.json"));
 }
 
-// `check --end-time T` predicts the run `run --end-time T` makes: steps in proportion to the
-// end time (the same step), and an --end-time that drops listed snapshots says so.
+// `check --end-time T` predicts the run `run --end-time T` makes: fewer steps than to the
+// case's end time, and an --end-time that drops listed snapshots says so.
 TEST_F(CliTest, CheckEndTimePredictsTheShortenedRun) {
   write_case("good.toml", std::string(kGood) + "\n[output]\nsnapshots = [0.05]\n");
   auto steps = [](const std::string& out) {
