@@ -29,7 +29,7 @@
 //   solid   = Σ_elastic (k_law c_sub(N_b) P_b n_b + c_call N_b) (n_b sub-steps per fluid
 //             step over P_b pair entries, each pair from both sides: the sub-step's two passes
 //             run over the pair lists, and a 2 000-particle plate with 3.88 entries per
-//             particle and a 2 514-particle ring with 3.0 measure the same 18 ns per entry on
+//             particle and a 2 514-particle ring with 3.0 measure 18.0 and 16.8 ns per entry on
 //             one thread while their costs per particle differ by 1.4x; c_call the per-call
 //             set-up of the sub-step loop, solid/elastic_substep.cpp, per particle; c_sub
 //             log-linear in N_b between 25 000 and 60 000 particles, where the arrays leave
@@ -93,8 +93,8 @@ struct CostConstants {
   // ≤ solid_speedup_n_small particles, large at ≥ solid_speedup_n_large, log-linear between.
   // Measured in whole-run slices (session 13, the solid phase on 1 and 2 threads, each
   // against its own machine factor: docs/validation.md §6 "Cost model"): the 2-layer skin
-  // (2 500) 1.38, the L floor section (5 434) 1.47, the 6-layer skin (22 506) 1.72; the
-  // 60 000-particle ring of bench_solid 2.0 (not a run: kept at 1.75).
+  // (2 500) 1.38, the L floor section (5 434) 1.47, the 6-layer skin (22 506) 1.79 and 2.03
+  // in two pairs of slices (1.75 taken); the 60 000-particle ring of bench_solid 2.0.
   double solid_speedup_small = 1.38, solid_speedup_large = 1.75;
   double solid_speedup_n_small = 2500, solid_speedup_n_large = 22500;
 };
@@ -147,7 +147,7 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 // factor for both, session 12, varied 0.64-0.95 and over-predicted the 6-layer skin by 86 %:
 // docs/validation.md §6 "Cost model"). A CPU of another speed, or one whose sibling hardware
 // thread is busy, changes the costs of each part alike to first order; `slamsph check` scales
-// the constants by these factors (about 0.3 s).
+// the constants by these factors (0.7-0.9 s on this machine kind, session 13).
 struct MachineFactors {
   double fluid = 1.0;       // water, neighbour lists, contact
   double solid = 1.0;       // per sub-step (pair entry)

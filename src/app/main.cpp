@@ -232,7 +232,7 @@ int dispatch(int argc, char** argv) {
       ->type_name("T");
   check->add_flag("--no-machine-probe", req.no_machine_probe,
                   "Predict with the calibration machine's per-particle costs, without the "
-                  "short built-in probe runs (~0.3 s) that scale them to this machine");
+                  "short built-in probe runs (0.7-0.9 s) that scale them to this machine");
 
   CLI::App* resume = app.add_subcommand(
       "resume",
