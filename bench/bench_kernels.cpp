@@ -1,5 +1,6 @@
 // Micro-benchmarks of the hot loops: neighbour-list builds and the fused GSPH fluid pass,
-// on a dam-break-like block of water at rest (hydrostatic), per thread count.
+// on a dam-break-like block of water at rest (hydrostatic), per thread count; the fluid pass
+// also with its scalar loop (fluid/gsph_pair_band.h).
 // Items processed = particles, so the rate column reads particles per second.
 #include <benchmark/benchmark.h>
 
@@ -66,17 +67,17 @@ void BM_GsphFluidRates(benchmark::State& st) {
   BandedPairs nl;
   build_banded_pairs(f.x, grid, r, exec, nl);
   const GsphParams prm{45.0, 3.0, 0.0, {0.0, -9.81}};
+  const PairLoop loop = st.range(2) != 0 ? PairLoop::Scalar : PairLoop::Auto;
   for (auto _ : st) {
-    compute_gsph_fluid_rates(f, nl, k, prm, exec);
+    compute_gsph_fluid_rates(f, nl, k, prm, exec, RatePass::Both, loop);
     benchmark::DoNotOptimize(f.a.data());
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
+// Arg 2: 0 = the loop the solver takes (four AVX2 lanes where the CPU has them), 1 = scalar.
 BENCHMARK(BM_GsphFluidRates)
-    ->Args({200, 1})
-    ->Args({200, 2})
-    ->Args({800, 1})
-    ->Args({800, 2})
+    ->ArgsProduct({{200, 800}, {1, 2}, {0, 1}})
+    ->ArgNames({"nx", "threads", "scalar"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -67,6 +67,11 @@ class Kernel {
     }
   }
 
+  // The two constants of dw_over_r_as<WendlandC2>: 1/h and the factor of t^3, for loops that
+  // evaluate it in vector lanes (fluid/gsph_pair_band.h) with the same roundings.
+  double inv_h() const { return inv_h_; }
+  double wendland_dw_over_r_factor() const { return norm_h2_5_; }
+
  private:
   KernelType type_ = KernelType::WendlandC2;
   double h_ = 1.0;

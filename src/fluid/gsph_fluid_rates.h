@@ -25,8 +25,13 @@ struct GsphParams {
   bool hydrostatic_correction = true;  // static state rho g . r in U* (riemann_solver.h)
 };
 
+// Which pair loop: Auto takes the four-lane one (fluid/gsph_pair_band.h) for the Wendland
+// kernel on CPUs with AVX2 and the scalar one otherwise; Scalar always the scalar one (the
+// reference the four lanes are tested against, bit for bit). Either gives the same sums.
+enum class PairLoop { Auto, Scalar };
+
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec,
-                              RatePass pass = RatePass::Both);
+                              RatePass pass = RatePass::Both, PairLoop loop = PairLoop::Auto);
 
 }  // namespace slamsph
