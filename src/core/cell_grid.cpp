@@ -43,21 +43,33 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
 
 namespace {
 
-// CSR lists over n queries: visit(i, emit) calls emit(j) for every neighbour j of query i,
-// in list order. Pass 1 counts, pass 2 fills; both gather-style over the queries.
-template <class Visit>
-void csr_lists(std::size_t n, Visit visit, const Executor& exec, NeighbourList& out) {
+// CSR lists over n queries: runs(i, run) calls run(b, e) for each run of candidates of query i
+// (their number bounds its list), visit(i, emit) calls emit(j) for every neighbour j of query
+// i, in list order. The candidates are tested once: each query fills its part of a scratch
+// array as long as its candidates, then the lists are packed (the tests done once instead of
+// counting first and filling after, docs/validation.md §6 Session 14).
+template <class Runs, class Visit>
+void csr_lists(std::size_t n, Runs runs, Visit visit, const Executor& exec, NeighbourList& out) {
+  std::vector<std::uint32_t>& part = out.scratch_start;
+  part.assign(n + 1, 0);
   out.start.assign(n + 1, 0);
   exec.for_each(n, [&](std::size_t i) {
     std::uint32_t c = 0;
-    visit(i, [&c](std::uint32_t) { ++c; });
-    out.start[i + 1] = c;
+    runs(i, [&c](std::uint32_t b, std::uint32_t e) { c += e > b ? e - b : 0; });
+    part[i + 1] = c;
+  });
+  for (std::size_t i = 0; i < n; ++i) part[i + 1] += part[i];
+  if (out.scratch.size() < part[n]) out.scratch.resize(part[n]);
+  exec.for_each(n, [&](std::size_t i) {
+    std::uint32_t* dst = out.scratch.data() + part[i];
+    visit(i, [&dst](std::uint32_t j) { *dst++ = j; });
+    out.start[i + 1] = static_cast<std::uint32_t>(dst - (out.scratch.data() + part[i]));
   });
   for (std::size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
   out.index.resize(out.start[n]);
   exec.for_each(n, [&](std::size_t i) {
-    std::uint32_t* dst = out.index.data() + out.start[i];
-    visit(i, [&dst](std::uint32_t j) { *dst++ = j; });
+    std::copy_n(out.scratch.data() + part[i], out.start[i + 1] - out.start[i],
+                out.index.data() + out.start[i]);
   });
 }
 
@@ -68,6 +80,7 @@ void build_lists(std::span<const Vec2> queries, std::span<const Vec2> pts, const
   const double r2 = radius * radius;
   csr_lists(
       queries.size(),
+      [&](std::size_t i, auto&& run) { grid.for_each_candidate_run(queries[i], run); },
       [&](std::size_t i, auto&& emit) {
         const Vec2 q = queries[i];
         grid.for_each_candidate(q, [&](std::uint32_t j) {
@@ -105,6 +118,9 @@ void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double 
     const double r2 = radius * radius;
     csr_lists(
         n,
+        [&](std::size_t i, auto&& run) {
+          grid.for_each_later_candidate_run(static_cast<std::uint32_t>(i), pts[i], run);
+        },
         [&](std::size_t i, auto&& emit) {
           const Vec2 q = pts[i];
           grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {

@@ -2,6 +2,7 @@
 // radius, so a search visits the 3x3 block of cells around a query. Binning is a serial
 // counting sort, hence deterministic; queries are read-only and thread-safe.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -17,8 +18,10 @@ class CellGrid {
 
   // Calls f(j) for every binned point j in the 3x3 cells around p (a superset of the
   // points within `cell` of p). Points just outside the grid use the border cells.
+  // Calls f(b, e) for each run [b, e) of cell_order() that holds candidates of p: one run
+  // per row of the 3x3 block (the cells of a row are contiguous in cell_order()).
   template <class F>
-  void for_each_candidate(Vec2 p, F&& f) const {
+  void for_each_candidate_run(Vec2 p, F&& f) const {
     if (sorted_.empty()) return;
     // A point more than one cell outside the grid has no candidates.
     const double fx = (p.x - lo_.x) * inv_cell_, fy = (p.y - lo_.y) * inv_cell_;
@@ -29,11 +32,15 @@ class CellGrid {
       const int x0 = cx > 0 ? cx - 1 : 0;
       const int x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
       if (x0 > x1) continue;
-      // Cells of one row are contiguous in `sorted_`.
-      const std::uint32_t b = start_[static_cast<std::size_t>(jy) * nx_ + x0];
-      const std::uint32_t e = start_[static_cast<std::size_t>(jy) * nx_ + x1 + 1];
-      for (std::uint32_t k = b; k < e; ++k) f(sorted_[k]);
+      f(start_[static_cast<std::size_t>(jy) * nx_ + x0],
+        start_[static_cast<std::size_t>(jy) * nx_ + x1 + 1]);
     }
+  }
+  template <class F>
+  void for_each_candidate(Vec2 p, F&& f) const {
+    for_each_candidate_run(p, [&](std::uint32_t b, std::uint32_t e) {
+      for (std::uint32_t k = b; k < e; ++k) f(sorted_[k]);
+    });
   }
 
   // For point i of the binned set itself, when the set is in cell order (cell_order() is the
@@ -41,15 +48,21 @@ class CellGrid {
   // same order. In cell order the row below holds only smaller indices and the own row only
   // [i + 1, end of the cell to the right) of them, so about half the cells are visited.
   template <class F>
-  void for_each_later_candidate(std::uint32_t i, Vec2 p, F&& f) const {
+  void for_each_later_candidate_run(std::uint32_t i, Vec2 p, F&& f) const {
     const int cx = cell_x(p.x), cy = cell_y(p.y);
     const int x0 = cx > 0 ? cx - 1 : 0;
     const int x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
     const std::size_t row = static_cast<std::size_t>(cy) * nx_;
-    for (std::uint32_t k = i + 1, e = start_[row + x1 + 1]; k < e; ++k) f(sorted_[k]);
+    f(i + 1, std::max(i + 1, start_[row + x1 + 1]));
     if (cy + 1 >= ny_) return;
     const std::size_t up = row + nx_;
-    for (std::uint32_t k = start_[up + x0], e = start_[up + x1 + 1]; k < e; ++k) f(sorted_[k]);
+    f(start_[up + x0], start_[up + x1 + 1]);
+  }
+  template <class F>
+  void for_each_later_candidate(std::uint32_t i, Vec2 p, F&& f) const {
+    for_each_later_candidate_run(i, p, [&](std::uint32_t b, std::uint32_t e) {
+      for (std::uint32_t k = b; k < e; ++k) f(sorted_[k]);
+    });
   }
 
   // Point indices in cell order (row-major by y, then x): a locality-friendly ordering.
@@ -80,6 +93,9 @@ class CellGrid {
 struct NeighbourList {
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> index;
+  // Workspace of the builders (cell_grid.cpp csr_lists), kept to reuse its memory: each
+  // query's candidates, then the offsets of its part of it. Not part of the list.
+  std::vector<std::uint32_t> scratch, scratch_start;
   std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
   std::size_t count(std::size_t i) const { return start[i + 1] - start[i]; }
 };
