@@ -114,8 +114,12 @@ struct BodyCost {
 struct CostPrediction {
   std::size_t fluid_particles = 0;
   std::size_t contact_particles = 0;
-  std::size_t water_pairs = 0;    // listed water–water pairs at the start (each once)
-  std::size_t contact_pairs = 0;  // listed fluid→contact plus contact→fluid pairs
+  std::size_t water_pairs = 0;      // listed water–water pairs at the start (each once)
+  std::size_t contact_pairs = 0;    // listed fluid→contact plus contact→fluid pairs
+  double fall_height = 0.0;         // [m] the height the water can fall (the step's speed bound)
+  double spread_seconds = 0.0;      // [s] the time the water takes to cover the dry floor (0: none)
+  double contact_pairs_rest = 0.0;  // the contact pairs with the water at rest (spread)
+  double contact_pairs_mean = 0.0;  // the predicted mean over the run (the contact phase's)
   std::vector<BodyCost> bodies;
   double speed = 0.0;       // the speed v of the step prediction [m/s]
   double dt = 0.0;          // predicted fluid step [s]
