@@ -478,11 +478,12 @@ std::string describe_cost(const CostPrediction& c, int threads) {
                     b.particles);
     s += buf;
     // The law factor is the elastic path's with little yield (fitted on 60 steps); a body that
-    // yields throughout iterates its return mapping in every sub-step (docs/validation.md §6
-    // "Cost model": the notched specimen ran 2x the prediction).
+    // yields throughout iterates its return mapping in every sub-step: x6-8 an SVK sub-step
+    // on a plate that yields everywhere (docs/validation.md §6 "Cost model", session 14; the
+    // notched specimen's sub-steps ran 2.3x the prediction).
     if (b.elastic && b.law_factor != 1.0)
       s += "    (its law cost assumes mostly elastic sub-steps: a body that yields throughout "
-           "takes up to 2x longer)\n";
+           "takes up to 3x longer)\n";
   }
   std::snprintf(buf, sizeof buf,
                 "predicted CPU time on 1 thread: %.3g s (water %.3g s, neighbour lists %.3g s, "
