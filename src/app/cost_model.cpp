@@ -478,7 +478,7 @@ std::string describe_cost(const CostPrediction& c, int threads) {
                     b.particles);
     s += buf;
     // The law factor is the elastic path's with little yield (fitted on 60 steps); a body that
-    // yields throughout iterates its return mapping in every sub-step: x6-8 an SVK sub-step
+    // yields throughout iterates its return mapping in every sub-step: x5.7-7.8 an SVK sub-step
     // on a plate that yields everywhere (docs/validation.md §6 "Cost model", session 14; the
     // notched specimen's sub-steps ran 2.3x the prediction).
     if (b.elastic && b.law_factor != 1.0)

@@ -89,10 +89,12 @@ struct CostConstants {
   // runs); 60 ns reproduces the one-sub-step-per-step cases (oscillating plate, tension bar:
   // 90–239 and 132–226 ns per particle-step measured). Scaled by its own machine factor.
   double solid_call_ns = 60.0;
-  // A Johnson–Cook sub-step against an SVK one, elastic (session 14, a 2 000-particle plate on
-  // one thread, ns per pair entry: elastic x2.2-3.0 of SVK; stretched so that every particle
-  // yields, x6.0-7.8: the return mapping's Newton iterations; docs/validation.md §6). A body
-  // that yields for much of its run costs more (the notched specimen 2.3x its prediction).
+  // A Johnson–Cook sub-step against an SVK one, for sub-steps that do not yield: fitted on
+  // the calibration's 60 steps; session 14 measured x2.3-3.0 on a 2 000-particle plate on one
+  // thread (ns per pair entry), and x5.7-7.8 with the plate stretched so that every particle
+  // yields (the return mapping's Newton iterations; docs/validation.md §6 "Cost model"). A
+  // body that yields for much of its run costs more (the notched specimen, which yields in
+  // 47 % of its particle-sub-steps, 2.3x its prediction); the initial state does not tell.
   double johnson_cook_factor = 2.56;
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
   // continuity pass) against a kick-drift-kick one, water and contact phases: dam break,
