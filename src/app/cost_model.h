@@ -6,8 +6,14 @@
 //
 // Step prediction. The fluid step is the acoustic CFL step cfl h / (c0 + v) (spec §2) with
 // v the larger of the initial speeds (water, bodies, prescribed motion tables) and the
-// free-fall speed sqrt(2 g H) over the water's height H, which the water reaches wherever
-// it collapses or is displaced; the initial acceleration bound C_a sqrt(h/|a|) if smaller
+// free-fall speed sqrt(2 g H) over the height H the water can fall: its highest particle
+// above the lowest level some of it can reach, from the built geometry in columns two
+// spacings wide across gravity — the water's top where it stands on a solid, the floor of a
+// dry column or under a breach (debris holds no water). Still water falls nowhere (H = 0;
+// with its whole depth the prediction had 15 % too many steps), a dam-break column by its
+// height (the dry floor beside it), the water over a breached plate into the chamber below
+// the slot (docs/validation.md §6 "Cost model", session 14); the initial acceleration bound
+// C_a sqrt(h/|a|) if smaller
 // (app/time_step_limit.h). Elastic bodies take ceil(Δt/Δt_s) sub-steps (their stable step
 // at the start, solid/body_dynamics.h); when bodies share the step (dual time stepping off,
 // or no water) the step is the smallest stable step and every body takes one sub-step. Not
@@ -24,8 +30,16 @@
 //   lists   = c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
 //             steps (rebuilt when a particle has moved half the skin s 2 h_c,
 //             coupling/interaction_lists.h; v the predicted speed)
-//   contact = c_cpair (N_fc + N_cf) with water; c_dry N_contact without (body state, loads,
-//             and without water also the step limit, checks and records)
+//   contact = c_cpair P with water; c_dry N_contact without (body state, loads, and without
+//             water also the step limit, checks and records). P is the mean of the listed
+//             fluid–contact pairs (N_fc + N_cf) over the run: water that can fall spreads over
+//             the dry floor of its container at about its fall speed, so the pairs go from
+//             the initial count to the count at rest (the water spread over every column its
+//             area reaches, to one level; in proportion to the surface contact particles
+//             within the support that face the water) in (dry floor length) / sqrt(2 g H),
+//             and stay there (the peer dam break's rose from 4 446 to ~10 000 in 1.3 s of its
+//             6.4 s; predicted mean 8 592 against 9 639 measured; the elastic gate 19 240
+//             against 22 151; cases/dam_break.toml 7 911 against 7 147)
 //   solid   = Σ_elastic (k_law c_sub(N_b) P_b n_b + c_call N_b) (n_b sub-steps per fluid
 //             step over P_b pair entries, each pair from both sides: the sub-step's two passes
 //             run over the pair lists, and a 2 000-particle plate with 3.88 entries per
@@ -75,7 +89,13 @@ struct CostConstants {
   // runs); 60 ns reproduces the one-sub-step-per-step cases (oscillating plate, tension bar:
   // 90–239 and 132–226 ns per particle-step measured). Scaled by its own machine factor.
   double solid_call_ns = 60.0;
-  double johnson_cook_factor = 2.56;  // a Johnson–Cook sub-step against an SVK one
+  // A Johnson–Cook sub-step against an SVK one, for sub-steps that do not yield: fitted on
+  // the calibration's 60 steps; session 14 measured x2.3-3.0 on a 2 000-particle plate on one
+  // thread (ns per pair entry), and x5.7-7.8 with the plate stretched so that every particle
+  // yields (the return mapping's Newton iterations; docs/validation.md §6 "Cost model"). A
+  // body that yields for much of its run costs more (the notched specimen, which yields in
+  // 47 % of its particle-sub-steps, 2.3x its prediction); the initial state does not tell.
+  double johnson_cook_factor = 2.56;
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
   // continuity pass) against a kick-drift-kick one, water and contact phases: dam break,
   // 7 131 steps either way, user CPU 12.5 against 9.1 s (docs/validation.md §6).
@@ -114,8 +134,12 @@ struct BodyCost {
 struct CostPrediction {
   std::size_t fluid_particles = 0;
   std::size_t contact_particles = 0;
-  std::size_t water_pairs = 0;    // listed water–water pairs at the start (each once)
-  std::size_t contact_pairs = 0;  // listed fluid→contact plus contact→fluid pairs
+  std::size_t water_pairs = 0;      // listed water–water pairs at the start (each once)
+  std::size_t contact_pairs = 0;    // listed fluid→contact plus contact→fluid pairs
+  double fall_height = 0.0;         // [m] the height the water can fall (the step's speed bound)
+  double spread_seconds = 0.0;      // [s] the time the water takes to cover the dry floor (0: none)
+  double contact_pairs_rest = 0.0;  // the contact pairs with the water at rest (spread)
+  double contact_pairs_mean = 0.0;  // the predicted mean over the run (the contact phase's)
   std::vector<BodyCost> bodies;
   double speed = 0.0;       // the speed v of the step prediction [m/s]
   double dt = 0.0;          // predicted fluid step [s]
