@@ -8,6 +8,7 @@
 
 #include "app/simulation.h"
 #include "core/parallel.h"
+#include "fluid/gsph_pair_band.h"
 #include "io/case_file.h"
 #include "solid/body_dynamics.h"
 #include "solid/elastic_substep.h"
@@ -267,8 +268,12 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   const bool symplectic = num.fluid_integrator == FluidIntegrator::Symplectic;
   const double pass_factor = symplectic ? k.symplectic_step_factor : 1.0;
   if (c.fluid_particles > 0) {
-    const double pair_ns = log_interpolate(nw, k.water_n_small, k.water_n_large,
-                                           k.water_pair_ns_small, k.water_pair_ns_large);
+    double pair_ns = log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_ns_small,
+                                     k.water_pair_ns_large);
+    if (sim.stepper().system().kernel_f.type() == KernelType::WendlandC2 &&
+        gsph_band_avx2_available())
+      pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_lanes_small,
+                                 k.water_pair_lanes_large);
     c.fluid_seconds = 1e-9 * steps * pass_factor *
                       (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
     const FsiStepper& st = sim.stepper();

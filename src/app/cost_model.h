@@ -26,7 +26,8 @@
 //             Verlet skin included; integration, limits, checks). c_pair is log-linear in
 //             N_water between its values at 3 200 and 166 500 particles (fitted 11.8 and
 //             20.6 ns under load, 16.3 and 19.0 ns in an idle repeat: a rise with size, by
-//             how much the measurements do not settle — docs/validation.md §6)
+//             how much the measurements do not settle — docs/validation.md §6), times the
+//             four-lane loop's fraction (0.59 → 0.70 over the same sizes) where that loop runs
 //   lists   = c_rebuild (N_water + N_contact) per rebuild, one rebuild every s h_c / (v Δt)
 //             steps (rebuilt when a particle has moved half the skin s 2 h_c,
 //             coupling/interaction_lists.h; v the predicted speed)
@@ -69,6 +70,12 @@ struct CostConstants {
   double water_pair_ns_small = 11.8;  // per listed water–water pair per fluid step, at
   double water_pair_ns_large = 20.6;  // ≤ water_n_small / ≥ water_n_large water particles
   double water_n_small = 3200, water_n_large = 166500;
+  // The pair costs above were fitted on the scalar pair loop. The four-lane loop
+  // (fluid/gsph_pair_band.h: Wendland kernel, CPUs with AVX2) takes this fraction of its time
+  // (docs/validation.md §6 "Session 14", 1 thread, alternated runs: the peer dam break's
+  // fluid rates 4.55-5.03 → 2.63-2.74 s at 3 200 water particles; skin_cylinder's to 2 ms
+  // 2.01-2.55 → 1.58-1.63 s at 166 500), log-linear in between as the pair costs.
+  double water_pair_lanes_small = 0.59, water_pair_lanes_large = 0.70;
   double water_ns = 21.4;         // per water particle per fluid step
   double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
   double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
