@@ -16,8 +16,6 @@ class CellGrid {
   // Bins `pts` into cells of size `cell` covering their bounding box.
   void build(std::span<const Vec2> pts, double cell);
 
-  // Calls f(j) for every binned point j in the 3x3 cells around p (a superset of the
-  // points within `cell` of p). Points just outside the grid use the border cells.
   // Calls f(b, e) for each run [b, e) of cell_order() that holds candidates of p: one run
   // per row of the 3x3 block (the cells of a row are contiguous in cell_order()).
   template <class F>
@@ -36,6 +34,8 @@ class CellGrid {
         start_[static_cast<std::size_t>(jy) * nx_ + x1 + 1]);
     }
   }
+  // Calls f(j) for every binned point j in the 3x3 cells around p (a superset of the
+  // points within `cell` of p). Points just outside the grid use the border cells.
   template <class F>
   void for_each_candidate(Vec2 p, F&& f) const {
     for_each_candidate_run(p, [&](std::uint32_t b, std::uint32_t e) {
@@ -47,6 +47,7 @@ class CellGrid {
   // identity): calls f(j) for every candidate of for_each_candidate(p_i) with j > i, in the
   // same order. In cell order the row below holds only smaller indices and the own row only
   // [i + 1, end of the cell to the right) of them, so about half the cells are visited.
+  // The _run form calls f(b, e) for the two runs of cell_order() that hold them.
   template <class F>
   void for_each_later_candidate_run(std::uint32_t i, Vec2 p, F&& f) const {
     const int cx = cell_x(p.x), cy = cell_y(p.y);

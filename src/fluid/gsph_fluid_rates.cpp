@@ -30,7 +30,7 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
     if constexpr (kContinuity) f.drho[i] = 0.0;  // sum_j V_j (v_i - v*) . grad W until the end
   });
   // The four-lane loop (gsph_pair_band.h) for the Wendland kernel where the CPU has it: the
-  // same sums, bit for bit, in about 0.6 of the time (docs/validation.md §6).
+  // same sums, bit for bit, in 0.59-0.75 of the time (docs/validation.md §6, Session 14).
   if (kType == KernelType::WendlandC2 && loop == PairLoop::Auto && gsph_band_avx2_available()) {
     const GsphBandData d{f.x.data(),
                          f.v.data(),
