@@ -4,33 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <random>
 
 #include "core/cell_grid.h"
 #include "fluid/gsph_fluid_rates.h"
+#include "test_fluid_cloud.h"
 
 using namespace slamsph;
 
 namespace {
 
 FluidParticles cloud(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3), u(-1.0, 1.0);
-  const double dx = 0.01;
-  FluidParticles f;
-  std::int64_t id = 0;
-  for (int j = 0; j < 30; ++j)
-    for (int i = 0; i < 40; ++i) {
-      f.resize(f.size() + 1);
-      const std::size_t k = f.size() - 1;
-      f.x[k] = {(i + 0.5 + jitter(rng)) * dx, (j + 0.5 + jitter(rng)) * dx};
-      f.v[k] = {0.5 * u(rng), 0.5 * u(rng)};
-      f.rho[k] = 1000.0 * (1.0 + 0.01 * u(rng));
-      f.p[k] = 2.0e4 * u(rng);
-      f.m[k] = f.rho[k] * dx * dx * (1.0 + 0.1 * u(rng));
-      f.id[k] = id++;
-    }
-  return f;
+  return test::disordered_cloud(seed, 40, 30, 0.3);
 }
 
 }  // namespace

@@ -5,32 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <random>
 
 #include "core/cell_grid.h"
 #include "fluid/gsph_fluid_rates.h"
 #include "fluid/gsph_pair_band.h"
+#include "test_fluid_cloud.h"
 
 using namespace slamsph;
 
 namespace {
 
 FluidParticles cloud(unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.35, 0.35), u(-1.0, 1.0);
-  const double dx = 0.01;
-  FluidParticles f;
-  for (int j = 0; j < 24; ++j)
-    for (int i = 0; i < 30; ++i) {
-      f.resize(f.size() + 1);
-      const std::size_t k = f.size() - 1;
-      f.x[k] = {(i + 0.5 + jitter(rng)) * dx, (j + 0.5 + jitter(rng)) * dx};
-      f.v[k] = {0.5 * u(rng), 0.5 * u(rng)};
-      f.rho[k] = 1000.0 * (1.0 + 0.01 * u(rng));
-      f.p[k] = 2.0e4 * u(rng);
-      f.m[k] = f.rho[k] * dx * dx * (1.0 + 0.1 * u(rng));
-      f.id[k] = static_cast<std::int64_t>(k);
-    }
+  FluidParticles f = test::disordered_cloud(seed, 30, 24, 0.35);
   f.x[101] = f.x[100];  // a coincident pair
   return f;
 }
