@@ -64,9 +64,11 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass)
     clock.lap(t.contact);
     compute_gsph_fluid_rates(fluid, lists_->ff(), sys_.kernel_f, gp, exec_, pass);
     clock.lap(t.fluid_rates);
-    add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_, pass);
-    if (pass != RatePass::Continuity)
-      compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_);
+    add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_, pass,
+                         &contact_pairs_);
+    if (pass != RatePass::Continuity)  // the pair forces just computed, each pair once
+      compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_,
+                               &contact_pairs_, &lists_->cf_in_fc());
     // The flags belong to the end-of-step positions (the momentum pass sees mid-step ones).
     if (pass != RatePass::Momentum)
       leaked_ = update_leak_flags(fluid, contact, lists_->fc(), exec_);

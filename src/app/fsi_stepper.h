@@ -33,6 +33,7 @@
 #include "core/kernel.h"
 #include "coupling/contact_layout.h"
 #include "coupling/contact_particles.h"
+#include "coupling/contact_rates.h"
 #include "coupling/force_correction_kind.h"
 #include "coupling/interaction_lists.h"
 #include "coupling/substep_average.h"
@@ -169,6 +170,7 @@ class FsiStepper {
   DualTimeStepping dual_;
   std::vector<BodyLoad> loads_;
   std::vector<SubstepAverage> averages_;  // per body
+  ContactPairForces contact_pairs_;       // kept by the fluid's contact sum for the reaction
   StepLimit limit_;
   double time_ = 0.0;
   long steps_ = 0;

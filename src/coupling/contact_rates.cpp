@@ -17,9 +17,16 @@ ContactPairInput pair_input(const FluidParticles& f, std::size_t i, double Vi,
 
 template <bool kViscous>
 void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
-              const Kernel& kernel, const ContactParams& prm, const Executor& exec, RatePass pass) {
+              const Kernel& kernel, const ContactParams& prm, const Executor& exec, RatePass pass,
+              ContactPairForces* keep) {
   const bool momentum = pass != RatePass::Continuity;
   const bool continuity = pass != RatePass::Momentum;
+  if (!momentum) keep = nullptr;
+  if (keep) {
+    keep->total.resize(fc.index.size());
+    keep->viscous.resize(fc.index.size());
+    keep->acted.assign(fc.index.size(), 0);
+  }
   // Split by pairs: the fluid in contact is a few rows of cells next to the walls, which
   // equal shares of the (cell-ordered) fluid would give to one thread.
   exec.for_each_weighted(f.size(), fc.start.data(), [&](std::size_t i) {
@@ -35,8 +42,14 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
           contact_pair<kViscous>(pair_input(f, i, Vi, c, s, prm), kernel, prm.c0, prm.omega,
                                  prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
       if (!r.active) continue;
-      force += r.force + r.force_viscous;
+      const Vec2 total = r.force + r.force_viscous;
+      force += total;
       drho += r.drho_term;
+      if (keep) {
+        keep->total[k] = total;
+        keep->viscous[k] = r.force_viscous;
+        keep->acted[k] = 1;
+      }
     }
     if (momentum) f.a[i] += force / f.m[i];
     if (continuity) f.drho[i] += 2.0 * f.rho[i] * drho;
@@ -45,13 +58,24 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
 
 template <bool kViscous>
 void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
-              const Kernel& kernel, const ContactParams& prm, const Executor& exec) {
+              const Kernel& kernel, const ContactParams& prm, const Executor& exec,
+              const ContactPairForces* kept, const std::vector<std::uint32_t>* cf_in_fc) {
+  const bool reuse = kept && cf_in_fc && cf_in_fc->size() == cf.index.size();
   // Split by pairs: the wetted contact particles are one stretch of each body's surface.
   exec.for_each_weighted(c.size(), cf.start.data(), [&](std::size_t s) {
     Vec2 force, visc;
     if (c.wetted[s]) {
       for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
         const std::uint32_t i = cf.index[k];
+        if (reuse && (*cf_in_fc)[k] < kept->acted.size()) {
+          // The pair as add_contact_to_fluid evaluated it (it skipped the same pairs: not
+          // wetted, not facing, outside the support).
+          const std::uint32_t q = (*cf_in_fc)[k];
+          if (!kept->acted[q]) continue;
+          force -= kept->total[q];
+          visc -= kept->viscous[q];
+          continue;
+        }
         if (!c.faces(s, f.x[i])) continue;
         const ContactPairResult r = contact_pair<kViscous>(
             pair_input(f, i, f.m[i] / f.rho[i], c, s, prm), kernel, prm.c0, prm.omega,
@@ -70,20 +94,21 @@ void reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList&
 
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
                           const Kernel& kernel, const ContactParams& prm, const Executor& exec,
-                          RatePass pass) {
+                          RatePass pass, ContactPairForces* keep) {
   if (prm.viscosity > 0.0)
-    to_fluid<true>(f, c, fc, kernel, prm, exec, pass);
+    to_fluid<true>(f, c, fc, kernel, prm, exec, pass, keep);
   else
-    to_fluid<false>(f, c, fc, kernel, prm, exec, pass);
+    to_fluid<false>(f, c, fc, kernel, prm, exec, pass, keep);
 }
 
 void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
-                              const Kernel& kernel, const ContactParams& prm,
-                              const Executor& exec) {
+                              const Kernel& kernel, const ContactParams& prm, const Executor& exec,
+                              const ContactPairForces* kept,
+                              const std::vector<std::uint32_t>* cf_in_fc) {
   if (prm.viscosity > 0.0)
-    reaction<true>(c, f, cf, kernel, prm, exec);
+    reaction<true>(c, f, cf, kernel, prm, exec, kept, cf_in_fc);
   else
-    reaction<false>(c, f, cf, kernel, prm, exec);
+    reaction<false>(c, f, cf, kernel, prm, exec, kept, cf_in_fc);
 }
 
 }  // namespace slamsph

@@ -2,10 +2,15 @@
 //  - add_contact_to_fluid: each fluid particle adds its solid neighbours' pressure
 //    force, viscous force and continuity term (solid velocity through v*).
 //  - compute_contact_reaction: each solid particle sums minus the same pair forces.
-// Both call contact_pair() with identical arguments, so sum of the two is zero to round-off.
+// Both call contact_pair() with identical arguments, so sum of the two is zero to round-off;
+// given the pair forces the fluid's sum kept (ContactPairForces), the reaction subtracts
+// those instead of evaluating the pairs again (the same bits, half the pair evaluations).
 // `pass` (fluid_integrator_kind.h): Momentum adds only the forces to a, Continuity only the
 // density term to drho; the reaction belongs to the momentum sums (call it with those).
 #pragma once
+#include <cstdint>
+#include <vector>
+
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/parallel.h"
@@ -27,11 +32,24 @@ struct ContactParams {
   double barrier_pressure = 0.0;
 };
 
+// The pair forces of the last add_contact_to_fluid with a momentum sum, per entry of fc: the
+// force on the fluid particle (pressure + barrier + viscous, and the viscous part alone) of
+// every pair that acted. compute_contact_reaction given them (and cf's entries in fc,
+// InteractionLists::cf_in_fc) subtracts these instead of evaluating each pair a second time:
+// the same values in the same order, so the same sums bit for bit.
+struct ContactPairForces {
+  std::vector<Vec2> total, viscous;
+  std::vector<std::uint8_t> acted;
+};
+
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
                           const Kernel& kernel, const ContactParams& prm, const Executor& exec,
-                          RatePass pass = RatePass::Both);
+                          RatePass pass = RatePass::Both, ContactPairForces* keep = nullptr);
 
+// With `kept` and `cf_in_fc` the forces kept by add_contact_to_fluid for the same state.
 void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
-                              const Kernel& kernel, const ContactParams& prm, const Executor& exec);
+                              const Kernel& kernel, const ContactParams& prm, const Executor& exec,
+                              const ContactPairForces* kept = nullptr,
+                              const std::vector<std::uint32_t>* cf_in_fc = nullptr);
 
 }  // namespace slamsph

@@ -1,6 +1,7 @@
 #include "coupling/interaction_lists.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace slamsph {
 
@@ -38,6 +39,18 @@ void InteractionLists::build(const std::vector<Vec2>& xf, const std::vector<Vec2
   contact_grid_.build(xc, cell);
   build_neighbour_list(xf, xc, contact_grid_, r_fc, false, exec, fc_);
   build_neighbour_list(xc, xf, fluid_grid_, r_fc, false, exec, cf_);
+  // The two lists hold the same pairs (the same radius, the same squared distance; the 3x3
+  // search of cells no smaller than the radius finds every one from either side).
+  cf_in_fc_.resize(cf_.index.size());
+  exec.for_each(cf_.size(), [&](std::size_t s) {
+    for (std::uint32_t m = cf_.start[s]; m < cf_.start[s + 1]; ++m) {
+      const std::uint32_t i = cf_.index[m];
+      std::uint32_t k = fc_.start[i];
+      while (k < fc_.start[i + 1] && fc_.index[k] != s) ++k;
+      // Not found (it cannot be, see above): the reaction evaluates that pair itself.
+      cf_in_fc_[m] = k < fc_.start[i + 1] ? k : std::numeric_limits<std::uint32_t>::max();
+    }
+  });
   fluid_ref_ = xf;
   contact_ref_ = xc;
 }

@@ -27,6 +27,10 @@ class InteractionLists {
   const BandedPairs& ff() const { return ff_; }  // fluid–fluid, each pair once
   const NeighbourList& fc() const { return fc_; }
   const NeighbourList& cf() const { return cf_; }
+  // For entry m of cf (contact s, fluid i): the entry of fc (fluid i, contact s) holding the
+  // same pair, so the reaction can reuse the pair force computed for the fluid
+  // (coupling/contact_rates.h ContactPairForces).
+  const std::vector<std::uint32_t>& cf_in_fc() const { return cf_in_fc_; }
   long rebuilds() const { return rebuilds_; }
   // Fluid grid of the last build; a query radius up to cell_size() - skin is safe, since
   // no particle has moved more than skin/2 since.
@@ -49,6 +53,7 @@ class InteractionLists {
   CellGrid fluid_grid_, contact_grid_;
   BandedPairs ff_;
   NeighbourList fc_, cf_;
+  std::vector<std::uint32_t> cf_in_fc_;
   std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
   long rebuilds_ = 0;
 };

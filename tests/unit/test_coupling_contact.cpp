@@ -11,11 +11,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "core/cell_grid.h"
 #include "core/parallel.h"
 #include "coupling/contact_pair.h"
 #include "coupling/contact_rates.h"
+#include "coupling/interaction_lists.h"
 #include "coupling/virtual_pressure.h"
 
 using namespace slamsph;
@@ -188,10 +190,10 @@ TEST(CouplingContactPair, NoAdhesionClipsNegativeStarPressure) {
 
 namespace {
 
-void action_reaction(double viscosity) {
+// A disordered water block over three layers of wall particles (dx = 1 cm).
+void contact_scene(FluidParticles& f, ContactParticles& c) {
   Lcg rng{42};
   const double dx = 0.01;
-  FluidParticles f;
   for (int j = 0; j < 6; ++j)
     for (int i = 0; i < 12; ++i) {
       f.resize(f.size() + 1);
@@ -202,7 +204,6 @@ void action_reaction(double viscosity) {
       f.p[k] = 1.0e3 * (1.0 + rng.next());
       f.m[k] = f.rho[k] * dx * dx;
     }
-  ContactParticles c;
   for (int l = 0; l < 3; ++l)
     for (int i = 0; i < 14; ++i) {
       c.resize(c.size() + 1);
@@ -212,6 +213,13 @@ void action_reaction(double viscosity) {
       c.a[s] = {0.0, 2.0 * rng.next()};
       c.volume[s] = dx * dx;
     }
+}
+
+void action_reaction(double viscosity) {
+  const double dx = 0.01;
+  FluidParticles f;
+  ContactParticles c;
+  contact_scene(f, c);
   const Kernel k(KernelType::WendlandC2, 1.3 * dx);
   const TaitEos eos{1000.0, 25.0, 7.0};
   const Executor exec(2);
@@ -257,6 +265,55 @@ TEST(CouplingContactRates, ActionEqualsReactionInviscid) {
 
 TEST(CouplingContactRates, ActionEqualsReactionViscous) {
   action_reaction(1e-3);
+}
+
+// The reaction from the pair forces the fluid's sum kept (ContactPairForces, through
+// InteractionLists::cf_in_fc) against the reaction that evaluates every pair again: the same
+// bits, with viscosity, with ghosts that face only part of the water and a dry particle.
+TEST(CouplingContactRates, ReactionFromTheKeptPairForcesIsBitIdentical) {
+  const double dx = 0.01;
+  FluidParticles f;
+  ContactParticles c;
+  contact_scene(f, c);
+  for (std::size_t s = 28; s < c.size(); ++s) {  // the third layer: ghosts facing +x
+    c.ghost[s] = 1;
+    c.anchor[s] = {0.06, 0.0};
+    c.normal[s] = {1.0, 0.0};
+  }
+  const Kernel k(KernelType::WendlandC2, 1.3 * dx);
+  const Executor exec(2);
+  InteractionLists lists(k.support(), k.support(), 0.2 * k.support());
+  lists.update(f, c, exec, true);  // may reorder f
+  ASSERT_EQ(lists.cf_in_fc().size(), lists.cf().index.size());
+  for (std::size_t s = 0; s < c.size(); ++s)
+    for (std::uint32_t m = lists.cf().start[s]; m < lists.cf().start[s + 1]; ++m) {
+      const std::uint32_t q = lists.cf_in_fc()[m];
+      ASSERT_LT(q, lists.fc().index.size());
+      ASSERT_EQ(lists.fc().index[q], s);  // the same pair, seen from the fluid
+      ASSERT_GE(q, lists.fc().start[lists.cf().index[m]]);
+      ASSERT_LT(q, lists.fc().start[lists.cf().index[m] + 1]);
+    }
+  const Vec2 g{0.0, -9.81};
+  compute_virtual_state(c, f, lists.cf(), k, TaitEos{1000.0, 25.0, 7.0}, g, exec);
+  c.wetted[3] = 0;  // a dry particle: no pair of it acts
+  const ContactParams prm{25.0, 3.0, 1e-3, g};
+  ContactPairForces kept;
+  add_contact_to_fluid(f, c, lists.fc(), k, prm, exec, RatePass::Both, &kept);
+  ContactParticles again = c;
+  compute_contact_reaction(c, f, lists.cf(), k, prm, exec, &kept, &lists.cf_in_fc());
+  compute_contact_reaction(again, f, lists.cf(), k, prm, exec);
+  int acting = 0;
+  for (std::size_t s = 0; s < c.size(); ++s) {
+    ASSERT_EQ(std::memcmp(&c.force[s], &again.force[s], sizeof(Vec2)), 0) << s;
+    ASSERT_EQ(std::memcmp(&c.force_viscous[s], &again.force_viscous[s], sizeof(Vec2)), 0) << s;
+    acting += norm(c.force[s]) > 0.0;
+  }
+  EXPECT_GT(acting, 10);
+  int skipped_by_ghosts = 0;
+  for (std::size_t s = 28; s < c.size(); ++s)
+    for (std::uint32_t m = lists.cf().start[s]; m < lists.cf().start[s + 1]; ++m)
+      skipped_by_ghosts += !c.faces(s, f.x[lists.cf().index[m]]);
+  EXPECT_GT(skipped_by_ghosts, 0);
 }
 
 TEST(CouplingContactRates, OnePairMatchesThePairFunctionWithRelativeGravity) {
