@@ -2,8 +2,9 @@
 // -mavx2 (CMakeLists.txt). So that no AVX2 code reaches the rest of the program through the
 // linker's choice among copies of an inline function, it calls no inline function of a
 // project or standard header — only the AVX intrinsics, which are always inlined — and keeps
-// everything else in an anonymous namespace (tests/unit/test_gsph_pair_band.cpp checks the
-// object's symbols).
+// everything else in an anonymous namespace (the test avx2_object_defines_only_its_functions,
+// tests/CMakeLists.txt, checks the object's symbols; tests/unit/test_fluid_pair_band.cpp the
+// sums).
 #include "fluid/gsph_pair_band.h"
 
 #if defined(__AVX2__)
