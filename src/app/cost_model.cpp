@@ -166,11 +166,11 @@ Spread spread_at_rest(const Columns& col, const ContactParticles& contact, doubl
     }
   }
   sp.level = b;
-  std::vector<double> b1(col.base), t1(col.n, sp.level);
+  const std::vector<double> t1(col.n, sp.level);
   for (std::size_t c = 0; c < col.n; ++c)
     if (!col.wet(c) && col.base[c] <= sp.level) sp.dry_length += col.width;
   const std::size_t n0 = wetted_contact(col, contact, col.bottom, col.top, r);
-  const std::size_t n1 = wetted_contact(col, contact, b1, t1, r);
+  const std::size_t n1 = wetted_contact(col, contact, col.base, t1, r);
   if (n0 > 0) sp.ratio = static_cast<double>(n1) / static_cast<double>(n0);
   return sp;
 }

@@ -29,51 +29,51 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
     if constexpr (kMomentum) f.a[i] = Vec2{};
     if constexpr (kContinuity) f.drho[i] = 0.0;  // sum_j V_j (v_i - v*) . grad W until the end
   });
+  // The pass's arrays and constants, for either loop.
+  const GsphBandData d{f.x.data(),
+                       f.v.data(),
+                       f.rho.data(),
+                       f.inv_rho.data(),
+                       f.p.data(),
+                       f.volume.data(),
+                       f.a.data(),
+                       f.drho.data(),
+                       pairs.half.start.data(),
+                       pairs.half.index.data(),
+                       kernel_in.inv_h(),
+                       kernel_in.wendland_dw_over_r_factor(),
+                       kernel_in.support() * kernel_in.support(),
+                       0.01 * kernel_in.h() * kernel_in.h(),  // Morris regulariser
+                       prm.c0,
+                       1.0 / prm.c0,
+                       prm.omega,
+                       prm.viscosity,
+                       prm.hydrostatic_correction ? prm.gravity : Vec2{},  // riemann_solver.h
+                       kViscous,
+                       kPass};
   // The four-lane loop (gsph_pair_band.h) for the Wendland kernel where the CPU has it: the
   // same sums, bit for bit, in 0.59-0.75 of the time (docs/validation.md §6, Session 14).
   if (kType == KernelType::WendlandC2 && loop == PairLoop::Auto && gsph_band_avx2_available()) {
-    const GsphBandData d{f.x.data(),
-                         f.v.data(),
-                         f.rho.data(),
-                         f.inv_rho.data(),
-                         f.p.data(),
-                         f.volume.data(),
-                         f.a.data(),
-                         f.drho.data(),
-                         pairs.half.start.data(),
-                         pairs.half.index.data(),
-                         kernel_in.inv_h(),
-                         kernel_in.wendland_dw_over_r_factor(),
-                         kernel_in.support() * kernel_in.support(),
-                         0.01 * kernel_in.h() * kernel_in.h(),
-                         prm.c0,
-                         1.0 / prm.c0,
-                         prm.omega,
-                         prm.viscosity,
-                         prm.hydrostatic_correction ? prm.gravity : Vec2{},
-                         kViscous,
-                         kPass};
     exec.for_alternating(pairs.bands(), [&d, &pairs](std::size_t band) {
       gsph_wendland_band_avx2(d, pairs.band_start[band], pairs.band_start[band + 1]);
     });
   } else {
     // Each pair once (j > i); the task of band b writes to bands b and b + 1 only.
-    exec.for_alternating(pairs.bands(), [&f, &pairs, &kernel_in, &prm](std::size_t band) {
+    exec.for_alternating(pairs.bands(), [&d, &pairs, &kernel_in](std::size_t band) {
       const Kernel kernel = kernel_in;
-      const double support2 = kernel.support() * kernel.support();
-      const double eta2 = 0.01 * kernel.h() * kernel.h();  // Morris regulariser
-      const double c0 = prm.c0, inv_c0 = 1.0 / prm.c0, omega = prm.omega, nu = prm.viscosity;
-      const Vec2 g_static = prm.hydrostatic_correction ? prm.gravity : Vec2{};  // riemann_solver.h
-      const Vec2* const x = f.x.data();
-      const Vec2* const v = f.v.data();
-      const double* const rho = f.rho.data();
-      const double* const inv_rho = f.inv_rho.data();
-      const double* const p = f.p.data();
-      const double* const V = f.volume.data();
-      Vec2* const acc = f.a.data();
-      double* const drho = f.drho.data();
-      const std::uint32_t* const start = pairs.half.start.data();
-      const std::uint32_t* const index = pairs.half.index.data();
+      const double support2 = d.support2, eta2 = d.eta2;
+      const double c0 = d.c0, inv_c0 = d.inv_c0, omega = d.omega, nu = d.nu;
+      const Vec2 g_static = d.g_static;
+      const Vec2* const x = d.x;
+      const Vec2* const v = d.v;
+      const double* const rho = d.rho;
+      const double* const inv_rho = d.inv_rho;
+      const double* const p = d.p;
+      const double* const V = d.V;
+      Vec2* const acc = d.acc;
+      double* const drho = d.drho;
+      const std::uint32_t* const start = d.start;
+      const std::uint32_t* const index = d.index;
       const std::uint32_t end_i = pairs.band_start[band + 1];
       for (std::uint32_t i = pairs.band_start[band]; i < end_i; ++i) {
         const Vec2 xi = x[i], vi = v[i];

@@ -19,6 +19,8 @@
 
 namespace slamsph {
 
+// The arrays and constants of one fluid pass (gsph_fluid_rates.cpp builds it once; the
+// scalar loop reads it too).
 struct GsphBandData {
   const Vec2* x;
   const Vec2* v;

@@ -106,7 +106,8 @@ void band(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end) {
       if constexpr (kMomentum) {
         const v4 fp = -2.0 * ps * dwr;
         const v4 fi = Vj * inv_rhoi * fp;
-        const v4 fj = Vi * gather(d.inv_rho, j) * fp;
+        const v4 inv_rhoj = gather(d.inv_rho, j);
+        const v4 fj = Vi * inv_rhoj * fp;
         ni = interleave(_mm256_and_pd(use, _mm256_xor_pd(sign, fi * dxx)),
                         _mm256_and_pd(use, _mm256_xor_pd(sign, fi * dxy)));
         nj = interleave(_mm256_and_pd(use, fj * dxx), _mm256_and_pd(use, fj * dxy));
@@ -114,7 +115,7 @@ void band(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end) {
           const v4 coef = d.nu * (rhoi + rhoj) * dwr * r2 / (r2 + d.eta2);
           const v4 vijx = vxi - vxj, vijy = vyi - vyj;
           const v4 vci = coef * Vj * inv_rhoi;
-          const v4 vcj = coef * Vi * gather(d.inv_rho, j);
+          const v4 vcj = coef * Vi * inv_rhoj;
           nvi = interleave(_mm256_and_pd(use, _mm256_xor_pd(sign, vci * vijx)),
                            _mm256_and_pd(use, _mm256_xor_pd(sign, vci * vijy)));
           nvj = interleave(_mm256_and_pd(use, vcj * vijx), _mm256_and_pd(use, vcj * vijy));
