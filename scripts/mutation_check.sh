@@ -6,7 +6,10 @@
 # Tests run per mutation (a documented subset of scripts/test.sh, in this order, stopping at
 # the first failure): the test executables in $TESTS below — the slamming report and the
 # absorbing zone, the unit tests of the fluid and the contact, the set-up warnings, the golden values, then the verification tests of the
-# contact and the slamming (still water last: it is the slowest). Only these and slamsph are
+# contact and the slamming (still water next: it is the slowest), and last the four-lane fluid
+# loop against the scalar one (since session 14 the fluid mutations are made in both loops: on
+# an AVX2 CPU the four-lane one runs, and a change to either one alone breaks their bit
+# identity; it comes last so that a physics test is named first when one catches it). Only these and slamsph are
 # rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -17,7 +20,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -36,7 +39,7 @@ M = [
  ("cavitation: continuity ignores the limit", "src/coupling/contact_pair.h",
   "u_star = std::min(s.u, L.u + std::max(L.p - p_min, 0.0) / (L.rho * c0));", "(void)u_star;"),
  ("static term switch ignored", "src/fluid/gsph_fluid_rates.cpp",
-  "prm.hydrostatic_correction ? g : Vec2{}", "g"),
+  "prm.hydrostatic_correction ? prm.gravity : Vec2{}", "prm.gravity"),
  ("sub-step averaged solid state: last sub-step instead", "src/coupling/substep_average.cpp",
   "  if (!avg.valid) return;", "  return;"),
  ("impact-pressure set-up warning removed", "src/app/setup_warnings.cpp",
@@ -62,6 +65,12 @@ M = [
   "const double dp_static = -0.5 * (in.rhoi + in.rhos) * dot(in.g_rel, dx);"),
  ("fluid j-side continuity doubled", "src/fluid/gsph_fluid_rates.cpp",
   "drho[j] -= Vi * (us - uR) * dwr_r;", "drho[j] -= 2.0 * Vi * (us - uR) * dwr_r;"),
+ ("four lanes: pressure-diffusion term deleted", "src/fluid/gsph_pair_band_avx2.cpp",
+  "(pi - pj - dp_static) * d.inv_c0", "0.0 * (pi - pj - dp_static) * d.inv_c0"),
+ ("four lanes: limiter full acoustic dissipation", "src/fluid/gsph_pair_band_avx2.cpp",
+  "_mm256_min_pd(c0, d.omega * _mm256_max_pd(zero, du))", "c0 + 0.0 * du"),
+ ("four lanes: j-side continuity doubled", "src/fluid/gsph_pair_band_avx2.cpp",
+  "cj = _mm256_and_pd(use, Vi * (us - uR) * dwr_r);", "cj = _mm256_and_pd(use, 2.0 * Vi * (us - uR) * dwr_r);"),
  ("contact static-term switch ignored", "src/coupling/contact_rates.cpp",
   "const Vec2 g_rel = prm.hydrostatic_correction ? prm.gravity - c.a[s] : Vec2{};",
   "const Vec2 g_rel = prm.gravity - c.a[s];"),
