@@ -41,6 +41,10 @@ void CellGrid::build(std::span<const Vec2> pts, double cell) {
   for (std::size_t i = 0; i < pts.size(); ++i) sorted_[fill[cell_of[i]]++] = i;
 }
 
+void CellGrid::renumber_in_cell_order() {
+  for (std::size_t k = 0; k < sorted_.size(); ++k) sorted_[k] = static_cast<std::uint32_t>(k);
+}
+
 namespace {
 
 // CSR lists over n queries: runs(i, run) calls run(b, e) for each run of candidates of query i
@@ -60,7 +64,9 @@ void csr_lists(std::size_t n, Runs runs, Visit visit, const Executor& exec, Neig
   });
   for (std::size_t i = 0; i < n; ++i) part[i + 1] += part[i];
   if (out.scratch.size() < part[n]) out.scratch.resize(part[n]);
-  exec.for_each(n, [&](std::size_t i) {
+  // Split by candidates (the tests' cost), not by queries: a fluid query next to a wall has
+  // contact candidates, one far from it none (the fluid–contact lists).
+  exec.for_each_weighted(n, part.data(), [&](std::size_t i) {
     std::uint32_t* dst = out.scratch.data() + part[i];
     visit(i, [&dst](std::uint32_t j) { *dst++ = j; });
     out.start[i + 1] = static_cast<std::uint32_t>(dst - (out.scratch.data() + part[i]));

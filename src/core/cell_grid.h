@@ -66,6 +66,12 @@ class CellGrid {
     });
   }
 
+  // After the binned points were permuted by cell_order() (point k is now the k-th in cell
+  // order, at the same position): the grid of the permuted points, as build() would bin them
+  // (same bounds and cells; the counting sort is stable, so each cell lists its points in
+  // ascending order, here consecutive), without binning them again.
+  void renumber_in_cell_order();
+
   // Point indices in cell order (row-major by y, then x): a locality-friendly ordering.
   const std::vector<std::uint32_t>& cell_order() const { return sorted_; }
   // Offsets into cell_order() where each row of cells (constant y index) begins; ny + 1

@@ -147,23 +147,27 @@ class Executor {
     });
   }
 
-  // f(i) for i in [0, n) where item i costs about (work[i + 1] - work[i]) + 1 units
-  // (`work` a prefix sum with n + 1 entries, e.g. NeighbourList::start: one unit per pair and
+  // f(i) for i in [0, n) where item i costs about pair_units (work[i + 1] - work[i]) + 1 units
+  // (`work` a prefix sum with n + 1 entries, e.g. NeighbourList::start: pair_units per pair and
   // one per item): each thread takes a contiguous share of about equal cost. For gathers over
   // lists whose long entries cluster in one part of the index range (the fluid next to a
   // tank's bottom wall, the wetted face of a body), where equal counts of items leave one
-  // thread with most of the pairs. Each iteration writes only its own entries, as in
-  // for_each, so the result does not depend on the split.
+  // thread with most of the pairs. pair_units is what a pair costs against an item without
+  // pairs: with 1 where a pair costs ten times more, the thread that got the wall's
+  // neighbours took 2.5x the other's time (docs/validation.md §6, Threads, Session 15). Each
+  // iteration writes only its own entries, as in for_each, so the result does not depend on
+  // the split.
   template <class F>
-  void for_each_weighted(std::size_t n, const std::uint32_t* work, F&& f) const {
+  void for_each_weighted(std::size_t n, const std::uint32_t* work, F&& f,
+                         std::uint32_t pair_units = 1) const {
     const int t = n < kMinParallel ? 1 : team_now(threads_);
     if (t == 1) {
       for (std::size_t i = 0; i < n; ++i) f(i);
       return;
     }
     region(t, [&](int rank) {
-      const std::size_t b = weighted_bound(n, work, rank, t);
-      const std::size_t e = weighted_bound(n, work, rank + 1, t);
+      const std::size_t b = weighted_bound(n, work, pair_units, rank, t);
+      const std::size_t e = weighted_bound(n, work, pair_units, rank + 1, t);
       for (std::size_t i = b; i < e; ++i) f(i);
     });
   }
@@ -287,7 +291,7 @@ class Executor {
   // kSpinMicroseconds, or SLAMSPH_SPIN_US (0 to 100 000) when set, read when an executor's
   // threads start. It spins only while the machine has no more runnable threads than this
   // process's CPUs (ThreadPool::probe in parallel.cpp).
-  static constexpr int kSpinMicroseconds = 50;
+  static constexpr int kSpinMicroseconds = 200;
   static int spin_microseconds();
   // The wait policy in force, for summary.json.
   static std::string wait_policy();
@@ -299,16 +303,17 @@ class Executor {
             n * static_cast<std::size_t>(rank + 1) / static_cast<std::size_t>(t)};
   }
   // The first item of rank's share in for_each_weighted: the least i with
-  // work[i] + i >= total · rank / t (n for rank == t).
-  static std::size_t weighted_bound(std::size_t n, const std::uint32_t* work, int rank, int t) {
+  // u (work[i] - work[0]) + i >= total · rank / t (n for rank == t).
+  static std::size_t weighted_bound(std::size_t n, const std::uint32_t* work, std::uint64_t u,
+                                    int rank, int t) {
     if (rank >= t) return n;
-    const std::uint64_t total = std::uint64_t{work[n]} - work[0] + n;
+    const std::uint64_t total = u * (std::uint64_t{work[n]} - work[0]) + n;
     const std::uint64_t goal =
         total * static_cast<std::uint64_t>(rank) / static_cast<std::uint64_t>(t);
-    std::size_t lo = 0, hi = n;  // binary search over the monotone work[i] - work[0] + i
+    std::size_t lo = 0, hi = n;  // binary search over the monotone u (work[i] - work[0]) + i
     while (lo < hi) {
       const std::size_t mid = lo + (hi - lo) / 2;
-      if (std::uint64_t{work[mid]} - work[0] + mid < goal)
+      if (u * (std::uint64_t{work[mid]} - work[0]) + mid < goal)
         lo = mid + 1;
       else
         hi = mid;

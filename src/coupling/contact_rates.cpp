@@ -15,6 +15,8 @@ ContactPairInput pair_input(const FluidParticles& f, std::size_t i, double Vi,
           c.v[s], c.v_noslip[s], c.rho[s], c.p[s], c.volume[s], g_rel};
 }
 
+constexpr std::uint32_t kPairUnitsToFluid = 8;
+
 template <bool kViscous>
 void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
               const Kernel& kernel, const ContactParams& prm, const Executor& exec, RatePass pass,
@@ -28,32 +30,38 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
     keep->acted.assign(fc.index.size(), 0);
   }
   // Split by pairs: the fluid in contact is a few rows of cells next to the walls, which
-  // equal shares of the (cell-ordered) fluid would give to one thread.
-  exec.for_each_weighted(f.size(), fc.start.data(), [&](std::size_t i) {
-    const std::uint32_t b = fc.start[i], e = fc.start[i + 1];
-    if (b == e) return;
-    Vec2 force;
-    double drho = 0.0;
-    const double Vi = f.m[i] / f.rho[i];
-    for (std::uint32_t k = b; k < e; ++k) {
-      const std::uint32_t s = fc.index[k];
-      if (!c.wetted[s] || !c.faces(s, f.x[i])) continue;
-      const ContactPairResult r =
-          contact_pair<kViscous>(pair_input(f, i, Vi, c, s, prm), kernel, prm.c0, prm.omega,
-                                 prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
-      if (!r.active) continue;
-      const Vec2 total = r.force + r.force_viscous;
-      force += total;
-      drho += r.drho_term;
-      if (keep) {
-        keep->total[k] = total;
-        keep->viscous[k] = r.force_viscous;
-        keep->acted[k] = 1;
-      }
-    }
-    if (momentum) f.a[i] += force / f.m[i];
-    if (continuity) f.drho[i] += 2.0 * f.rho[i] * drho;
-  });
+  // equal shares of the (cell-ordered) fluid would give to one thread. A listed pair (a
+  // Riemann solution, or a skipped dry or back-facing pair) costs about 8 items without pairs
+  // (perf of the 3 200-particle dam break on 2 threads: with 1 the first thread took 2.5x the
+  // second's time, with 8 within 3 %; docs/validation.md §6, Threads, Session 15).
+  exec.for_each_weighted(
+      f.size(), fc.start.data(),
+      [&](std::size_t i) {
+        const std::uint32_t b = fc.start[i], e = fc.start[i + 1];
+        if (b == e) return;
+        Vec2 force;
+        double drho = 0.0;
+        const double Vi = f.m[i] / f.rho[i];
+        for (std::uint32_t k = b; k < e; ++k) {
+          const std::uint32_t s = fc.index[k];
+          if (!c.wetted[s] || !c.faces(s, f.x[i])) continue;
+          const ContactPairResult r =
+              contact_pair<kViscous>(pair_input(f, i, Vi, c, s, prm), kernel, prm.c0, prm.omega,
+                                     prm.viscosity, prm.cavitation_pressure, prm.barrier_pressure);
+          if (!r.active) continue;
+          const Vec2 total = r.force + r.force_viscous;
+          force += total;
+          drho += r.drho_term;
+          if (keep) {
+            keep->total[k] = total;
+            keep->viscous[k] = r.force_viscous;
+            keep->acted[k] = 1;
+          }
+        }
+        if (momentum) f.a[i] += force / f.m[i];
+        if (continuity) f.drho[i] += 2.0 * f.rho[i] * drho;
+      },
+      kPairUnitsToFluid);
 }
 
 template <bool kViscous>

@@ -17,10 +17,12 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
         Executor::kMinParallelCheap);
     if (df < lim2 && dc < lim2) return false;
   }
-  // Reorder the fluid into cell order so neighbours are close in memory.
+  // Reorder the fluid into cell order so neighbours are close in memory. The grid then holds
+  // the same cells with the points renumbered, which is what binning them again would give.
   fluid_grid_.build(f.x, cell_size());
   f.permute(fluid_grid_.cell_order());
-  build(f.x, c.x, exec);
+  fluid_grid_.renumber_in_cell_order();
+  build(f.x, c.x, exec, true);
   ++rebuilds_;
   return true;
 }
@@ -30,13 +32,20 @@ double InteractionLists::cell_size() const {
 }
 
 void InteractionLists::build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc,
-                             const Executor& exec) {
+                             const Executor& exec, bool fluid_grid_ready) {
   const double r_ff = support_ff_ + skin_;
   const double r_fc = support_fc_ + skin_;
   const double cell = cell_size();
-  fluid_grid_.build(xf, cell);
+  if (!fluid_grid_ready) fluid_grid_.build(xf, cell);
   build_banded_pairs(xf, fluid_grid_, r_ff, exec, ff_);
-  contact_grid_.build(xc, cell);
+  // Contact particles that have not moved since the last build (a tank's walls, a fixed
+  // body: most of the contact set of a tank case) are binned as before: the same grid.
+  const bool contact_moved =
+      !contact_grid_built_ || xc.size() != contact_ref_.size() ||
+      !std::equal(xc.begin(), xc.end(), contact_ref_.begin(),
+                  [](const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; });
+  if (contact_moved) contact_grid_.build(xc, cell);
+  contact_grid_built_ = true;
   build_neighbour_list(xf, xc, contact_grid_, r_fc, false, exec, fc_);
   build_neighbour_list(xc, xf, fluid_grid_, r_fc, false, exec, cf_);
   // The two lists hold the same pairs (the same radius, the same squared distance; the 3x3
@@ -57,7 +66,7 @@ void InteractionLists::build(const std::vector<Vec2>& xf, const std::vector<Vec2
 
 void InteractionLists::restore(std::vector<Vec2> fluid_ref, std::vector<Vec2> contact_ref,
                                long rebuilds, const Executor& exec) {
-  build(fluid_ref, contact_ref, exec);
+  build(fluid_ref, contact_ref, exec, false);
   rebuilds_ = rebuilds;
 }
 

@@ -46,8 +46,10 @@ class InteractionLists {
 
  private:
   double cell_size() const;
-  // Grids and lists from fluid positions xf (already in cell order) and contact xc.
-  void build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc, const Executor& exec);
+  // Grids and lists from fluid positions xf (already in cell order) and contact xc; with
+  // fluid_grid_ready the fluid grid already bins xf.
+  void build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc, const Executor& exec,
+             bool fluid_grid_ready);
 
   double support_ff_, support_fc_, skin_;
   CellGrid fluid_grid_, contact_grid_;
@@ -55,6 +57,7 @@ class InteractionLists {
   NeighbourList fc_, cf_;
   std::vector<std::uint32_t> cf_in_fc_;
   std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
+  bool contact_grid_built_ = false;            // contact_grid_ bins contact_ref_
   long rebuilds_ = 0;
 };
 

@@ -517,11 +517,11 @@ TEST_F(CliTest, ThreadDefaultFollowsEnvironmentThenAffinity) {
                                    : s.substr(at + 23, s.find('"', at + 23) - at - 23);
   };
   EXPECT_EQ(policy("env -u SLAMSPH_SPIN_US"),
-            "spin up to 50 us unless the CPUs are oversubscribed, then sleep");
+            "spin up to 200 us unless the CPUs are oversubscribed, then sleep");
   EXPECT_EQ(policy("env SLAMSPH_SPIN_US=0"),
             "spin up to 0 us unless the CPUs are oversubscribed, then sleep");
   EXPECT_EQ(policy("env SLAMSPH_SPIN_US=junk"),
-            "spin up to 50 us unless the CPUs are oversubscribed, then sleep");
+            "spin up to 200 us unless the CPUs are oversubscribed, then sleep");
 }
 
 // Issue 12: a run stopped by --max-steps 0 was reported "completed" with a 0 N/m "peak";

@@ -84,6 +84,18 @@ TEST(Executor, WeightedLoopsSplitTheWorkNotTheItems) {
     for (const std::uint64_t p : parts)
       EXPECT_NEAR(static_cast<double>(p), total / threads, 41.0) << threads;
   }
+  // With pair_units u a pair weighs u items: the shares balance u·pairs + items.
+  const Executor two(2);
+  for (std::uint32_t units : {1u, 8u}) {
+    std::vector<std::thread::id> who(n);
+    two.for_each_weighted(
+        n, work.data(), [&](std::size_t i) { who[i] = std::this_thread::get_id(); }, units);
+    std::size_t cut = 1;
+    while (cut < n && who[cut] == who[0]) ++cut;
+    const double first = static_cast<double>(units) * work[cut] + static_cast<double>(cut);
+    const double total = static_cast<double>(units) * work[n] + static_cast<double>(n);
+    EXPECT_NEAR(first, 0.5 * total, units * 40.0 + 1.0) << units;
+  }
 }
 
 // Pass k of a team reads what every thread wrote in pass k − 1 (a shifted neighbour outside
