@@ -46,4 +46,9 @@ bool gsph_band_avx2_available();
 // Wendland kernel. Only call it when gsph_band_avx2_available().
 void gsph_wendland_band_avx2(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end);
 
+// The same in eight lanes (fluid/gsph_pair_band_avx512.cpp, built with -mavx512f), computing
+// only the partners inside the support, packed in list order: the same sums, bit for bit.
+bool gsph_band_avx512_available();
+void gsph_wendland_band_avx512(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end);
+
 }  // namespace slamsph
