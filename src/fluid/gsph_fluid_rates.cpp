@@ -10,16 +10,17 @@ namespace slamsph {
 
 namespace {
 
-// The hot loop of the solver. solve_riemann() is written out with its divisions hoisted
+// The scalar pair loop over particles [i_begin, i_end) of a band: each pair once (j > i); the
+// task of band b writes to bands b and b + 1 only. It is the reference of the lane loops
+// (gsph_pair_band.h) and runs for the cubic spline and on CPUs without AVX2.
+// solve_riemann() is written out with its divisions hoisted
 // (tests/unit/test_fluid_momentum.cpp checks it against the plain formulas through the
 // conservation and uniform-state tests; riemann_solver.h is the reference).
-// Every constant and array pointer is copied into a local of the band task: read through
-// the task's captures, the compiler has to reload them (and redo the kernel's constant
+// Every constant and array pointer is copied into a local: read through
+// GsphBandData, the compiler has to reload them (and redo the kernel's constant
 // factor) after every store to acc[j] or drho[j], which may alias them as far as it knows.
 // 1/rho_j comes from a per-particle array filled with V = m/rho (the same division, once per
 // particle instead of once per pair), so the sums are bit-identical to the plain form.
-// The scalar pair loop over particles [i_begin, i_end) of a band: each pair once (j > i); the
-// task of band b writes to bands b and b + 1 only.
 template <bool kViscous, KernelType kType, RatePass kPass>
 void scalar_band(const GsphBandData& d, const Kernel& kernel_in, std::uint32_t i_begin,
                  std::uint32_t i_end) {
