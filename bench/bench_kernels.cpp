@@ -67,17 +67,19 @@ void BM_GsphFluidRates(benchmark::State& st) {
   BandedPairs nl;
   build_banded_pairs(f.x, grid, r, exec, nl);
   const GsphParams prm{45.0, 3.0, 0.0, {0.0, -9.81}};
-  const PairLoop loop = st.range(2) != 0 ? PairLoop::Scalar : PairLoop::Auto;
+  const PairLoop loop = static_cast<PairLoop>(st.range(2));
   for (auto _ : st) {
     compute_gsph_fluid_rates(f, nl, k, prm, exec, RatePass::Both, loop);
     benchmark::DoNotOptimize(f.a.data());
   }
   st.SetItemsProcessed(st.iterations() * static_cast<long>(f.size()));
 }
-// Arg 2: 0 = the loop the solver takes (four AVX2 lanes where the CPU has them), 1 = scalar.
+// Arg 2, PairLoop: 0 = the loop the solver takes (eight AVX-512 lanes, else four AVX2 lanes
+// where the CPU has them), 1 = scalar, 2 = four lanes, 3 = eight lanes (scalar where the CPU
+// lacks them).
 BENCHMARK(BM_GsphFluidRates)
-    ->ArgsProduct({{200, 800}, {1, 2}, {0, 1}})
-    ->ArgNames({"nx", "threads", "scalar"})
+    ->ArgsProduct({{200, 800}, {1, 2}, {0, 1, 2, 3}})
+    ->ArgNames({"nx", "threads", "loop"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

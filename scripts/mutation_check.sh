@@ -6,10 +6,11 @@
 # Tests run per mutation (a documented subset of scripts/test.sh, in this order, stopping at
 # the first failure): the test executables in $TESTS below — the slamming report and the
 # absorbing zone, the unit tests of the fluid and the contact, the set-up warnings, the golden values, then the verification tests of the
-# contact and the slamming (still water next: it is the slowest), and last the four-lane fluid
-# loop against the scalar one (since session 14 the fluid mutations are made in both loops: on
-# an AVX2 CPU the four-lane one runs, and a change to either one alone breaks their bit
-# identity; it comes last so that a physics test is named first when one catches it). Only these and slamsph are
+# contact and the slamming (still water next: it is the slowest), and last the four- and
+# eight-lane fluid loops against the scalar one (since session 14 the fluid mutations are made
+# in each loop: on an AVX2 CPU the four-lane one runs, since session 15 the eight-lane one on an
+# AVX-512F CPU, and a change to one loop alone breaks their bit identity; it comes last so that
+# a physics test is named first when one catches it). Only these and slamsph are
 # rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -71,6 +72,14 @@ M = [
   "_mm256_min_pd(c0, d.omega * _mm256_max_pd(zero, du))", "c0 + 0.0 * du"),
  ("four lanes: j-side continuity doubled", "src/fluid/gsph_pair_band_avx2.cpp",
   "cj = _mm256_and_pd(use, Vi * (us - uR) * dwr_r);", "cj = _mm256_and_pd(use, 2.0 * Vi * (us - uR) * dwr_r);"),
+ ("eight lanes: pressure-diffusion term deleted", "src/fluid/gsph_pair_band_avx512.cpp",
+  "(pi - pj - dp_static) * d.inv_c0", "0.0 * (pi - pj - dp_static) * d.inv_c0"),
+ ("eight lanes: limiter full acoustic dissipation", "src/fluid/gsph_pair_band_avx512.cpp",
+  "_mm512_min_pd(splat(d.c0), d.omega * _mm512_max_pd(zero, du))", "splat(d.c0) + 0.0 * du"),
+ ("eight lanes: j-side continuity doubled", "src/fluid/gsph_pair_band_avx512.cpp",
+  "_mm512_store_pd(c.cj + e, Vi * (us - uR) * dwr_r);", "_mm512_store_pd(c.cj + e, 2.0 * Vi * (us - uR) * dwr_r);"),
+ ("eight lanes: coincident partners packed", "src/fluid/gsph_pair_band_avx512.cpp",
+  "r2, zero, _CMP_NEQ_UQ);", "r2, zero, _CMP_TRUE_UQ);"),
  ("contact static-term switch ignored", "src/coupling/contact_rates.cpp",
   "const Vec2 g_rel = prm.hydrostatic_correction ? prm.gravity - c.a[s] : Vec2{};",
   "const Vec2 g_rel = prm.gravity - c.a[s];"),

@@ -25,10 +25,12 @@ struct GsphParams {
   bool hydrostatic_correction = true;  // static state rho g . r in U* (riemann_solver.h)
 };
 
-// Which pair loop: Auto takes the four-lane one (fluid/gsph_pair_band.h) for the Wendland
-// kernel on CPUs with AVX2 and the scalar one otherwise; Scalar always the scalar one (the
-// reference the four lanes are tested against, bit for bit). Either gives the same sums.
-enum class PairLoop { Auto, Scalar };
+// Which pair loop: Auto takes, for the Wendland kernel, the eight-lane one
+// (fluid/gsph_pair_band.h) on CPUs with AVX-512F, else the four-lane one on CPUs with AVX2,
+// else the scalar one; Scalar always the scalar one (the reference the lanes are tested
+// against, bit for bit); FourLanes / EightLanes that one where the CPU has it, else the
+// scalar one. All give the same sums.
+enum class PairLoop { Auto, Scalar, FourLanes, EightLanes };
 
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec,

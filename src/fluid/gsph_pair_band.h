@@ -1,8 +1,10 @@
-// The fluid pair loop of one band (fluid/gsph_fluid_rates.cpp) in four vector lanes, for the
-// Wendland C2 kernel on x86-64 CPUs with AVX2 (fluid/gsph_pair_band_avx2.cpp, the only file
-// built with -mavx2; chosen at run time, so the binary still runs on any x86-64).
+// The fluid pair loop of one band (fluid/gsph_fluid_rates.cpp) in vector lanes, for the
+// Wendland C2 kernel on x86-64 CPUs: eight lanes with AVX-512F (fluid/gsph_pair_band_avx512.cpp,
+// the only file built with -mavx512f; its own header comment says how it packs the pairs),
+// else four lanes with AVX2 (fluid/gsph_pair_band_avx2.cpp, the only file built with -mavx2);
+// chosen at run time, so the binary still runs on any x86-64.
 //
-// Four listed partners j of particle i go through the distance, the square root, the
+// Four lanes: four listed partners j of particle i go through the distance, the square root, the
 // divisions, the kernel and the Riemann solution at once; then each lane's contributions are
 // added to i and to its j one lane after the other, in list order. Every lane operation is the
 // scalar loop's operation in the same order (no reassociation; no fused multiply-add, which
@@ -45,5 +47,12 @@ bool gsph_band_avx2_available();
 // Particles [i_begin, i_end) of a band: the scalar loop of gsph_fluid_rates.cpp for the
 // Wendland kernel. Only call it when gsph_band_avx2_available().
 void gsph_wendland_band_avx2(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end);
+
+// The same in eight lanes (fluid/gsph_pair_band_avx512.cpp, built with -mavx512f), computing
+// only the partners inside the support, packed in list order: the same sums, bit for bit
+// (GsphPairBand.EightLanesAreBitIdenticalToTheScalarLoop). Only call it when
+// gsph_band_avx512_available() (a list longer than its chunk goes to the four-lane loop).
+bool gsph_band_avx512_available();
+void gsph_wendland_band_avx512(const GsphBandData& d, std::uint32_t i_begin, std::uint32_t i_end);
 
 }  // namespace slamsph
