@@ -274,6 +274,10 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
         gsph_band_avx2_available())
       pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_lanes_small,
                                  k.water_pair_lanes_large);
+    if (sim.stepper().system().kernel_f.type() == KernelType::WendlandC2 &&
+        gsph_band_avx512_available())
+      pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_eight_small,
+                                 k.water_pair_eight_large);
     c.fluid_seconds = 1e-9 * steps * pass_factor *
                       (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
     const FsiStepper& st = sim.stepper();

@@ -76,6 +76,11 @@ struct CostConstants {
   // fluid rates 4.55-5.03 → 2.63-2.74 s at 3 200 water particles; skin_cylinder's to 2 ms
   // 2.01-2.55 → 1.58-1.63 s at 166 500), log-linear in between as the pair costs.
   double water_pair_lanes_small = 0.59, water_pair_lanes_large = 0.70;
+  // The eight-lane loop (AVX-512F CPUs) against the four lanes (docs/validation.md §6
+  // "Session 15", alternated runs on a loaded machine: the pass alone at 320 000 water
+  // particles 32.8 against 38.5 ms of CPU on 1 thread, the 320 000-particle run's CPU 0.87x;
+  // the 3 200-particle peer case the same within its noise), log-linear in between.
+  double water_pair_eight_small = 1.0, water_pair_eight_large = 0.85;
   double water_ns = 21.4;         // per water particle per fluid step
   double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
   double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
