@@ -59,10 +59,21 @@ class Executor;
 // 2 threads next to a busy core: 18.2 s), results bit-identical (docs/model.md §5).
 constexpr std::size_t kSubstepParticlesPerThread = 1000;
 
+// Bodies of at least this many particles take the wavefront schedule of the sub-steps
+// (elastic_substep.cpp) when it applies (no Eulerian switch, two or more sub-steps, a level
+// structure narrow enough for the cache); smaller ones the two-pass schedule. Both give the
+// same bits.
+constexpr std::size_t kSubstepWavefrontParticles = 20000;
+
+// Which schedule runs the sub-steps: Auto (by the rule above) or one forced (tests,
+// benchmarks); Wavefront still falls back to TwoPass where it does not apply.
+enum class SubstepSchedule { Auto, TwoPass, Wavefront };
+
 // `steps` sub-steps of size h [s] with the fluid force body.f_fluid and gravity g held; needs
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,
 // f_av, f_hg and the law's history at the end of the last sub-step and adds the sub-steps'
 // dissipated, hourglass and external work to the body's accumulators.
-void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec);
+void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
+                          SubstepSchedule schedule = SubstepSchedule::Auto);
 
 }  // namespace slamsph
