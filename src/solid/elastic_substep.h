@@ -41,6 +41,12 @@
 // team's first thread while the others run pass 1 of the next sub-step, so it too does not
 // depend on the thread count. All of this is bit-identical to the sub-step before these
 // storage changes (docs/validation.md, "Solid sub-step").
+// Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
+// for large bodies without an Eulerian switch a wavefront over the pair graph's levels
+// (solid/substep_levels.h), which advances a band of ~2 × block levels through up to 20
+// sub-steps while it is in the core's cache (2 barriers per block + 1 between blocks); the
+// per-sub-step powers are then summed in particle order after each block. Same bits
+// (tests/unit/test_solid_substep.cpp, docs/validation.md "Solid sub-step", session 15).
 #pragma once
 #include <cstddef>
 
