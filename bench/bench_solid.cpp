@@ -7,7 +7,11 @@
 //    layers, TL-SFPM, SVK, artificial viscosity and hourglass control on) in free vibration
 //    of its n = 2 mode, advanced by advance_body over 20 stable steps per iteration (the
 //    sub-step loop alone, no fluid). Arguments: case (0: 2 layers, 2 514 particles, r 0.3 m;
-//    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads.
+//    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads. Case 2
+//    runs the wavefront schedule of the sub-steps (solid/elastic_substep.h, bodies of
+//    >= 20 000 particles), cases 0 and 1 the two-pass one. The `band` counter (largest
+//    |i - j| of a pair in the stored order) is not what the wavefront needs: it runs over
+//    the pair graph's levels (solid/substep_levels.h).
 //  - BM_RingSubstepsJohnsonCook: the same rings with the Johnson–Cook law (the Al 2024-T3
 //    preset's flow stress, heating, EOS and failure constants; the same E and ν as above,
 //    so the sub-step count is comparable). The mode stays elastic (stress ~10 MPa against

@@ -4,6 +4,7 @@
 #include <span>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "core/parallel.h"
 #include "core/simd2.h"
@@ -11,15 +12,73 @@
 #include "solid/eulerian_failed_interaction.h"
 #include "solid/hourglass_control.h"
 #include "solid/stress_update.h"
+#include "solid/substep_levels.h"
 
 namespace slamsph {
 namespace {
+
+// Wavefront schedule (see substeps_with): levels of at least this many particles (shorter
+// tasks cost more to dispatch than they compute), a block of at most kWavefrontMaxBlock
+// sub-steps (the power rows hold n × block records) whose working set, ~(2 block + 3)
+// levels of kWavefrontBytes each per particle, fits in kWavefrontCache (half of a core's
+// 1 MiB L2 on the machines this was measured on).
+constexpr std::size_t kWavefrontMinLevel = 16;
+constexpr int kWavefrontMaxBlock = 20;
+constexpr std::size_t kWavefrontBytes = 750;
+constexpr std::size_t kWavefrontCache = 512 * 1024;
+// Levels ahead whose lines are requested (fetch in substeps_with), particles ahead in the
+// sums of the powers.
+constexpr long kPrefetchLevels = 2;
+constexpr std::size_t kPrefetchPowers = 32;
+
+// Sub-steps per block of the wavefront schedule for this call, 0 for the two-pass schedule
+// (no Eulerian switch is checked by the caller).
+int wavefront_block(SolidBody& body, int steps, SubstepSchedule schedule) {
+  const std::size_t n = body.size();
+  if (schedule == SubstepSchedule::TwoPass || steps < 1 || n == 0) return 0;
+  const bool forced = schedule == SubstepSchedule::Wavefront;
+  if (!forced && (steps < 2 || n < kSubstepWavefrontParticles)) return 0;
+  SubstepLevels& lv = body.substep.levels;
+  update_substep_levels(body.topology.pairs, kWavefrontMinLevel, lv);
+  if (!lv.ok) return 0;
+  if (forced) return std::min(steps, kWavefrontMaxBlock);
+  const std::size_t window =
+      kWavefrontCache / (std::max<std::size_t>(lv.widest, 1) * kWavefrontBytes);
+  const int block = std::min(
+      {steps, kWavefrontMaxBlock, static_cast<int>(std::min<std::size_t>(window, 1000) / 2) - 1});
+  return block >= 2 ? block : 0;
+}
+
+// Level bounds B[0..t] of the chunks of a team of t threads for a block of Q phases: equal
+// work (Σ 1 + pairs), every bound then moved down by (Q − 1)/2 levels, since each thread but
+// the last also finishes the seam above its chunk (~Q² level-phases, ~Q(Q − 1)/2 more than
+// the triangle its chunk leaves out). False if a middle chunk is narrower than 2Q levels
+// (its two seams would meet) or a chunk is empty.
+bool wavefront_bounds(const SubstepLevels& lv, int t, long Q, std::vector<std::size_t>& B) {
+  const std::size_t m = lv.levels();
+  const double total = lv.work[m];
+  B[0] = 0;
+  B[static_cast<std::size_t>(t)] = m;
+  for (int r = 1; r < t; ++r) {
+    const double goal = total * r / t;
+    std::size_t l = static_cast<std::size_t>(
+        std::lower_bound(lv.work.begin(), lv.work.end(), goal) - lv.work.begin());
+    l -= std::min(l, static_cast<std::size_t>((Q - 1) / 2));
+    B[static_cast<std::size_t>(r)] = std::max(l, B[static_cast<std::size_t>(r) - 1] + 1);
+  }
+  for (int r = 0; r < t; ++r) {
+    const std::size_t lo = B[static_cast<std::size_t>(r)], hi = B[static_cast<std::size_t>(r) + 1];
+    if (hi <= lo) return false;
+    if (r > 0 && r + 1 < t && hi - lo < static_cast<std::size_t>(2 * Q)) return false;
+  }
+  return true;
+}
 
 // kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;
 // kEulerian: body.eulerian.active (fixed per call, so the pair loops carry no test for them).
 template <class Law, bool kHourglass, bool kViscous, bool kEulerian>
 void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                   const Executor& exec) {
+                   const Executor& exec, SubstepSchedule schedule) {
   const std::size_t n = body.size();
   const SolidTopology& topo = body.topology;
   const SolidMaterial& mat = body.material;
@@ -49,19 +108,25 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // constant velocity is the clamps' work. The per-particle powers come from pass 2
   // (w.power); summed here serially in particle order, as dot products of the same numbers,
   // so the sums do not depend on the thread count.
-  auto account = [&] {
+  // `slot`: where particle i's powers are in `power` (the wavefront's rows are in level
+  // order), null for i.
+  auto step_sums = [&](const SubstepPower* power, const std::uint32_t* slot) {
     double diss = 0.0, hg = 0.0, ext = 0.0, grip = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
-      const SubstepPower& p = w.power[i];
+      if (slot && i + kPrefetchPowers < n) __builtin_prefetch(&power[slot[i + kPrefetchPowers]]);
+      const SubstepPower& p = power[slot ? slot[i] : i];
       diss -= p.viscous;
       hg -= p.hourglass;
       ext += p.external;
       if (body.clamped[i]) grip -= p.clamp;
     }
-    body.dissipated += h * diss;
-    body.hourglass_work += h * hg;
-    body.external_work += h * ext;
-    body.clamp_work += h * grip;
+    return SubstepPower{diss, hg, ext, grip};
+  };
+  auto account = [&](const SubstepPower& s) {
+    body.dissipated += h * s.viscous;
+    body.hourglass_work += h * s.hourglass;
+    body.external_work += h * s.external;
+    body.clamp_work += h * s.clamp;
   };
   // First half kick and drift of particle i from its v and a into (vh, x).
   auto kick_drift = [&](std::size_t i, Vec2 vi, Vec2 ai, std::span<const Vec2> x,
@@ -79,6 +144,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::lo;
   using simd::v2d;
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
+  // Sub-steps per block of the wavefront schedule, 0 for the two-pass one.
+  const int block = kEulerian ? 0 : wavefront_block(body, steps, schedule);
+  if (block > 0) {
+    w.power.resize(n * static_cast<std::size_t>(block));
+    w.step_sums.resize(static_cast<std::size_t>(steps));
+  }
   bool swapped = false;  // the current positions are in w.x_next
   exec.run_team(threads, [&](const Team& team) {
     // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
@@ -111,8 +182,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     Vec2* const f_av = body.f_av.data();
     Vec2* const f_hg = body.f_hg.data();
     double* const energy = body.e.data();
-    const auto [b, e] = team.share(n);
-    for (std::size_t i = b; i < e; ++i) {
+    // The per-particle parts of the sub-step, shared by the two schedules below (the same
+    // arithmetic per particle in either, so the same bits). setup: the per-call pair records,
+    // Σ_j g_ij, the external force, a and the first kick and drift.
+    auto setup = [&](std::size_t i) __attribute__((always_inline)) {
       Vec2 gs;
       w.upper[i] = start[i + 1];
       for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
@@ -131,192 +204,312 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, body.v[i], body.a[i], x, vh, x);
+    };
+    // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
+    // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
+    // rounding of the Vec2 / Mat2 forms.
+    auto pass1 = [&](std::size_t i) __attribute__((always_inline)) {
+      simd::Cols Fc, Fdc;
+      // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
+      // its F comes from its current neighbours.
+      const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
+      const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
+      for (std::uint32_t k = k0; k < ku; ++k) {
+        const SubstepPairRef& r = ref[k];
+        const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
+        simd::add_outer(Fc, simd::load(x[index[k]]) - xi, gx, gy);
+        simd::add_outer(Fdc, simd::load(vh[index[k]]) - vi, gx, gy);
+      }
+      for (std::uint32_t k = ku; k < k1; ++k) {
+        const SubstepPairRef& r = ref[k];
+        const std::uint32_t j = index[k];
+        const v2d xj = simd::load(x[j]), vj = simd::load(vh[j]);
+        const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
+        simd::add_outer(Fc, xj - xi, gx, gy);
+        simd::add_outer(Fdc, vj - vi, gx, gy);
+        if constexpr (kViscous) {
+          // viscous_force_on's pair term for i; for j it is the exact negative (x_ji =
+          // −x_ij and v_ji = −v_ij bit for bit, Π, h, ρ0 and |c| symmetric), the heat the
+          // same.
+          Vec2 xij, vij;
+          simd::store(xij, xi - xj);
+          simd::store(vij, vi - vj);
+          const double pi = monaghan_pi(vij, xij, 0.5 * (hp[i] + hp[j]), 0.5 * (rho0[i] + rho0[j]),
+                                        c, av_alpha, av_beta);
+          Vec2 f;
+          double q = 0.0;
+          if (pi != 0.0) {
+            const double s = pi * r.viscous_weight / norm(xij);
+            f = s * xij;
+            q = -0.5 * s * dot(xij, vij);
+          }
+          visc[k] = {f, q};
+          visc[reverse[k]] = {-f, q};
+        }
+      }
+      const Mat2 F = simd::mat(Fc);
+      Mat2 Fdot = simd::mat(Fdc);
+      // The material's F and Ḟ: the kinematic ones above (the hourglass control below
+      // keeps the kinematic F) times the map C that keeps F continuous across a switch's
+      // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
+      // neighbours.
+      Mat2 Fm = F, K;
+      const bool switched = eulerian && body.eulerian.switched[i];
+      if constexpr (eulerian) {
+        if (switched) {
+          eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
+        } else {
+          Fm = F * body.F_rebase[i];
+          Fdot = Fdot * body.F_rebase[i];
+        }
+      }
+      const Mat2 F_old = Fb[i], P_old = Pb[i];
+      Fb[i] = Fm;
+      const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
+      Pb[i] = P;
+      if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
+      if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
+      // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
+      stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
+      SubstepParticleMats& mi = mats[i];
+      // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+      const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
+      simd::store(mi.vp_c0, VP.c0);
+      simd::store(mi.vp_c1, VP.c1);
+      if constexpr (kHourglass) {
+        // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
+        simd::Cols Gi;
+        for (std::uint32_t k = k0; k < k1; ++k) {
+          const SubstepPairRef& r = ref[k];
+          const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
+          const v2d keps =
+              simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
+          simd::store(keps_k[k], keps);
+          simd::add_outer(Gi, keps, Xx, Xy);
+        }
+        simd::store(mi.g_c0, Gi.c0);
+        simd::store(mi.g_c1, Gi.c1);
+      }
+    };
+    // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
+    // over i's pairs, each in its own accumulator), second half kick, internal energy; next
+    // kick and drift (if `more`); i's powers into pw. The pair terms of i's own side,
+    // V0_i P_i g_ij and G_i g_ij, are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum,
+    // per call): the same forces at a different rounding (tests/unit/test_solid_substep.cpp).
+    auto pass2 = [&](std::size_t i, bool more, SubstepPower& pw) __attribute__((always_inline)) {
+      v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
+      double heat = 0.0;
+      for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
+        const SubstepPairRev& r = rev[k];
+        const SubstepParticleMats& mj = mats[r.j];
+        const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
+        fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
+        if constexpr (kViscous) {
+          fav += simd::load(visc[k].f);
+          heat += visc[k].q;
+        }
+        if constexpr (kHourglass) {
+          grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
+          grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
+        }
+      }
+      const SubstepParticleMats& mi = mats[i];
+      const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
+      Vec2 fsv, favv, fhg;
+      simd::store(favv, fav);
+      simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
+      if constexpr (kHourglass)
+        simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
+      if constexpr (eulerian) {
+        Vec2 fse, fve;
+        eulerian_force_on(body, x, vh, body.eulerian.stress_map, i, fse, fve, heat);
+        fsv += fse;
+        favv += fve;
+      }
+      energy[i] += h * (stress_power[i] + heat / m[i]);
+      // Forces, acceleration and velocity are body state only at the end of the call (and
+      // read by the Eulerian operators): in between they live in registers and w.power.
+      const Vec2 fi = fsv + favv + fhg;
+      const Vec2 ai = clamped[i] ? Vec2{} : (fi + fext[i]) / m[i];
+      const Vec2 vi = clamped[i] ? clamp_v[i] : vh[i] + hh * ai;
+      pw = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
+            clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
+      if (eulerian || !more) {
+        f_av[i] = favv;
+        f_hg[i] = fhg;
+        f_int[i] = fi;
+        a[i] = ai;
+        v[i] = vi;
+      }
+      if (more) kick_drift(i, vi, ai, x, vhn, xn);
+    };
+    if (block == 0) {
+      // Two passes over the team's share per sub-step, a barrier after each.
+      const auto [b, e] = team.share(n);
+      for (std::size_t i = b; i < e; ++i) setup(i);
+      team.barrier();
+      for (int step = 0; step < steps; ++step) {
+        // The current pairs of the switched particles at the drifted positions.
+        if constexpr (eulerian) {
+          if (team.leader()) build_eulerian_pairs(body, x);
+          team.barrier();
+        }
+        for (std::size_t i = b; i < e; ++i) pass1(i);
+        if (team.leader() && step > 0)
+          account(step_sums(w.power.data(), nullptr));  // the previous sub-step's
+        team.barrier();
+        const bool more = step + 1 < steps;
+        for (std::size_t i = b; i < e; ++i) pass2(i, more, w.power[i]);
+        team.barrier();
+        if (eulerian && more) {
+          std::swap(x, xn);
+          std::swap(vh, vhn);
+          if (team.leader()) swapped = !swapped;
+        }
+      }
+      if (team.leader() && steps > 0) account(step_sums(w.power.data(), nullptr));
+      return;
     }
-    team.barrier();
-    for (int step = 0; step < steps; ++step) {
-      if constexpr (eulerian) {  // current pairs of the switched particles at the drifted positions
-        if (team.leader()) build_eulerian_pairs(body, x);
+    // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
+    // sub-steps in blocks of `block`, each block a sequence of Q phases (the set-up in the
+    // first block, then pass 1 and pass 2 of each sub-step). Phase q of level l needs phase
+    // q - 1 of levels l - 1, l and l + 1 (pass 1 reads the neighbours' x and v½ of the last
+    // pass 2; pass 2 reads their V0 P, G, κ ε and viscous terms of pass 1 and overwrites x
+    // and v½ in place, which those neighbours' pass 1 has read) and nothing else, so phase q
+    // of level l may run once phase q - 1 of levels l - 1 .. l + 1 is done and before phase
+    // q + 1 of any of them. Each thread runs the tasks (l, q) of its chunk of levels
+    // [lo, hi) that depend on its chunk only (l + q < hi unless the last chunk, l − q ≥ lo
+    // unless the first), in order of l + q then q: at any moment the working set is ~Q
+    // levels, which stay in the core's cache over the block's sub-steps instead of the whole
+    // body being streamed twice per sub-step. After a barrier each thread but the last
+    // finishes the seam at its chunk's upper end (levels [hi − q, hi + q) of phase q), which
+    // needs both chunks. Each particle's arithmetic is that of the two-pass schedule; the
+    // powers of the energy bookkeeping go to one row per sub-step and are summed in particle
+    // order after the block, so nothing depends on the schedule or the thread count.
+    const std::uint32_t* const order = w.levels.order.data();
+    const std::uint32_t* const lstart = w.levels.start.data();
+    const long m_lv = static_cast<long>(w.levels.levels());
+    const int rank = team.rank(), t = team.size();
+    std::vector<std::size_t> B(static_cast<std::size_t>(t) + 1);
+    for (int s0 = 0; s0 < steps; s0 += block) {
+      const int s1 = std::min(steps, s0 + block);
+      const int first = s0 == 0 ? 1 : 0;  // the set-up is phase 0 of the first block
+      const long Q = 2 * (s1 - s0) + first;
+      auto run = [&](long l, long q) __attribute__((always_inline)) {
+        const std::uint32_t* p = order + lstart[l];
+        const std::uint32_t* const pe = order + lstart[l + 1];
+        if (q < first) {
+          for (; p != pe; ++p) setup(*p);
+          return;
+        }
+        const long qq = q - first;
+        const int step = s0 + static_cast<int>(qq / 2);
+        if (qq % 2 == 0) {
+          for (; p != pe; ++p) pass1(*p);
+          return;
+        }
+        const bool more = step + 1 < steps;
+        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step - s0) * n;
+        for (; p != pe; ++p) pass2(*p, more, row[p - order]);
+      };
+      if (!wavefront_bounds(w.levels, t, Q, B)) {
+        // A chunk too narrow for its seams (a short body on several threads): phase by phase,
+        // each thread a contiguous share of the levels, a barrier after each phase.
+        const long lo = m_lv * rank / t, hi = m_lv * (rank + 1) / t;
+        for (long q = 0; q < Q; ++q) {
+          for (long l = lo; l < hi; ++l) run(l, q);
+          team.barrier();
+        }
+      } else {
+        // Level l's data is read from memory for the block's first phase of l, in an order
+        // the hardware prefetchers do not follow (each level is ~2 × layers runs of the stored
+        // order): the lines are requested ahead.
+        auto fetch = [&](long l) {
+          auto lines = [](const void* b, const void* e) {
+            for (const char* c = static_cast<const char*>(b); c < static_cast<const char*>(e);
+                 c += 64)
+              __builtin_prefetch(c);
+          };
+          for (const std::uint32_t* p = order + lstart[l]; p != order + lstart[l + 1]; ++p) {
+            const std::uint32_t i = *p, k0 = start[i], k1 = start[i + 1];
+            __builtin_prefetch(&x[i]);
+            __builtin_prefetch(&vh[i]);
+            __builtin_prefetch(&Fb[i]);
+            __builtin_prefetch(&Pb[i]);
+            __builtin_prefetch(&mats[i]);
+            __builtin_prefetch(&mats[i].g_c1);
+            __builtin_prefetch(&stress_power[i]);
+            __builtin_prefetch(&energy[i]);
+            __builtin_prefetch(&gsum[i]);
+            __builtin_prefetch(&fext[i]);
+            __builtin_prefetch(&m[i]);
+            __builtin_prefetch(&V0[i]);
+            __builtin_prefetch(&rho0[i]);
+            __builtin_prefetch(&hp[i]);
+            __builtin_prefetch(&upper[i]);
+            __builtin_prefetch(&start[i]);
+            for (const auto& hv : body.history.values) __builtin_prefetch(&hv[i]);
+            lines(ref + k0, ref + k1);
+            lines(rev + k0, rev + k1);
+            lines(keps_k + k0, keps_k + k1);
+            lines(visc + k0, visc + k1);
+            lines(index + k0, index + k1);
+          }
+        };
+        const long lo = static_cast<long>(B[rank]), hi = static_cast<long>(B[rank + 1]);
+        const bool left = rank > 0, right = rank + 1 < t;
+        const long T_end = right ? hi : hi + Q - 1;
+        for (long T = lo; T < T_end; ++T) {
+          if (T + kPrefetchLevels < hi) fetch(T + kPrefetchLevels);
+          long qmax = std::min(Q - 1, left ? (T - lo) / 2 : T - lo);
+          for (long q = std::max(0L, T - hi + 1); q <= qmax; ++q) run(T - q, q);
+        }
+        team.barrier();
+        if (right)
+          for (long q = 1; q < Q; ++q)
+            for (long l = std::max(0L, hi - q); l < std::min(m_lv, hi + q); ++l) run(l, q);
         team.barrier();
       }
-      // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
-      // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
-      // rounding of the Vec2 / Mat2 forms.
-      for (std::size_t i = b; i < e; ++i) {
-        simd::Cols Fc, Fdc;
-        // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
-        // its F comes from its current neighbours.
-        const v2d xi = simd::load(x[i]), vi = simd::load(vh[i]);
-        const std::uint32_t k0 = start[i], ku = upper[i], k1 = start[i + 1];
-        for (std::uint32_t k = k0; k < ku; ++k) {
-          const SubstepPairRef& r = ref[k];
-          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
-          simd::add_outer(Fc, simd::load(x[index[k]]) - xi, gx, gy);
-          simd::add_outer(Fdc, simd::load(vh[index[k]]) - vi, gx, gy);
-        }
-        for (std::uint32_t k = ku; k < k1; ++k) {
-          const SubstepPairRef& r = ref[k];
-          const std::uint32_t j = index[k];
-          const v2d xj = simd::load(x[j]), vj = simd::load(vh[j]);
-          const v2d gk = simd::load(r.g), gx = lo(gk), gy = hi(gk);
-          simd::add_outer(Fc, xj - xi, gx, gy);
-          simd::add_outer(Fdc, vj - vi, gx, gy);
-          if constexpr (kViscous) {
-            // viscous_force_on's pair term for i; for j it is the exact negative (x_ji =
-            // −x_ij and v_ji = −v_ij bit for bit, Π, h, ρ0 and |c| symmetric), the heat the
-            // same.
-            Vec2 xij, vij;
-            simd::store(xij, xi - xj);
-            simd::store(vij, vi - vj);
-            const double pi = monaghan_pi(vij, xij, 0.5 * (hp[i] + hp[j]),
-                                          0.5 * (rho0[i] + rho0[j]), c, av_alpha, av_beta);
-            Vec2 f;
-            double q = 0.0;
-            if (pi != 0.0) {
-              const double s = pi * r.viscous_weight / norm(xij);
-              f = s * xij;
-              q = -0.5 * s * dot(xij, vij);
-            }
-            visc[k] = {f, q};
-            visc[reverse[k]] = {-f, q};
-          }
-        }
-        const Mat2 F = simd::mat(Fc);
-        Mat2 Fdot = simd::mat(Fdc);
-        // The material's F and Ḟ: the kinematic ones above (the hourglass control below
-        // keeps the kinematic F) times the map C that keeps F continuous across a switch's
-        // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
-        // neighbours.
-        Mat2 Fm = F, K;
-        const bool switched = eulerian && body.eulerian.switched[i];
-        if constexpr (eulerian) {
-          if (switched) {
-            eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
-          } else {
-            Fm = F * body.F_rebase[i];
-            Fdot = Fdot * body.F_rebase[i];
-          }
-        }
-        const Mat2 F_old = Fb[i], P_old = Pb[i];
-        Fb[i] = Fm;
-        const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-        Pb[i] = P;
-        if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
-        if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
-        // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
-        stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
-        SubstepParticleMats& mi = mats[i];
-        // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
-        const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
-        simd::store(mi.vp_c0, VP.c0);
-        simd::store(mi.vp_c1, VP.c1);
-        if constexpr (kHourglass) {
-          // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
-          simd::Cols Gi;
-          for (std::uint32_t k = k0; k < k1; ++k) {
-            const SubstepPairRef& r = ref[k];
-            const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
-            const v2d keps =
-                simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
-            simd::store(keps_k[k], keps);
-            simd::add_outer(Gi, keps, Xx, Xy);
-          }
-          simd::store(mi.g_c0, Gi.c0);
-          simd::store(mi.g_c1, Gi.c1);
-        }
-      }
-      if (team.leader() && step > 0) account();  // the previous sub-step's
-      team.barrier();
-      // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
-      // over i's pairs, each in its own accumulator), second half kick, internal energy; next
-      // kick and drift. The pair terms of i's own side, V0_i P_i g_ij and G_i g_ij, are
-      // summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum, per call): the same forces
-      // at a different rounding (tests/unit/test_solid_substep.cpp).
-      const bool more = step + 1 < steps;
-      for (std::size_t i = b; i < e; ++i) {
-        v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
-        double heat = 0.0;
-        for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-          const SubstepPairRev& r = rev[k];
-          const SubstepParticleMats& mj = mats[r.j];
-          const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
-          fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
-          if constexpr (kViscous) {
-            fav += simd::load(visc[k].f);
-            heat += visc[k].q;
-          }
-          if constexpr (kHourglass) {
-            grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
-            grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
-          }
-        }
-        const SubstepParticleMats& mi = mats[i];
-        const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
-        Vec2 fsv, favv, fhg;
-        simd::store(favv, fav);
-        simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
-        if constexpr (kHourglass)
-          simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
-        if constexpr (eulerian) {
-          Vec2 fse, fve;
-          eulerian_force_on(body, x, vh, body.eulerian.stress_map, i, fse, fve, heat);
-          fsv += fse;
-          favv += fve;
-        }
-        energy[i] += h * (stress_power[i] + heat / m[i]);
-        // Forces, acceleration and velocity are body state only at the end of the call (and
-        // read by the Eulerian operators): in between they live in registers and w.power.
-        const Vec2 fi = fsv + favv + fhg;
-        const Vec2 ai = clamped[i] ? Vec2{} : (fi + fext[i]) / m[i];
-        const Vec2 vi = clamped[i] ? clamp_v[i] : vh[i] + hh * ai;
-        w.power[i] = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
-                      clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
-        if (eulerian || !more) {
-          f_av[i] = favv;
-          f_hg[i] = fhg;
-          f_int[i] = fi;
-          a[i] = ai;
-          v[i] = vi;
-        }
-        if (more) kick_drift(i, vi, ai, x, vhn, xn);
-      }
-      team.barrier();
-      if (eulerian && more) {
-        std::swap(x, xn);
-        std::swap(vh, vhn);
-        if (team.leader()) swapped = !swapped;
-      }
+      // The block's powers summed in particle order, its sub-steps shared among the threads.
+      const int nb = s1 - s0;
+      for (int k = nb * rank / t; k < nb * (rank + 1) / t; ++k)
+        w.step_sums[static_cast<std::size_t>(s0 + k)] =
+            step_sums(w.power.data() + static_cast<std::size_t>(k) * n, w.levels.slot.data());
+      if (s1 < steps) team.barrier();  // before the next block overwrites the rows
     }
-    if (team.leader() && steps > 0) account();
   });
+  if (block > 0)  // the wavefront's sums of the sub-steps, in order
+    for (int s = 0; s < steps; ++s) account(w.step_sums[static_cast<std::size_t>(s)]);
   if (swapped) std::swap(body.x, w.x_next);
   body.history.updates += static_cast<std::uint64_t>(steps);
 }
 
 template <class Law>
 void substeps_dispatch(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                       const Executor& exec) {
+                       const Executor& exec, SubstepSchedule schedule) {
   const SolidMaterial& mat = body.material;
   const bool hourglass = mat.hourglass != 0.0;
   const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
   const bool eulerian = body.eulerian.active;
   if (hourglass && viscous)
-    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec)
-             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec, schedule)
+             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec, schedule);
   else if (hourglass)
-    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec)
-             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec, schedule)
+             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec, schedule);
   else if (viscous)
-    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec)
-             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec, schedule)
+             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec, schedule);
   else
-    eulerian ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec)
-             : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec);
+    eulerian ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec, schedule)
+             : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec, schedule);
 }
 
 }  // namespace
 
-void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec) {
-  std::visit([&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec); },
+void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
+                          SubstepSchedule schedule) {
+  std::visit([&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec, schedule); },
              body.material.law);
 }
 

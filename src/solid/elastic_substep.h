@@ -41,6 +41,12 @@
 // team's first thread while the others run pass 1 of the next sub-step, so it too does not
 // depend on the thread count. All of this is bit-identical to the sub-step before these
 // storage changes (docs/validation.md, "Solid sub-step").
+// Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
+// for large bodies without an Eulerian switch a wavefront over the pair graph's levels
+// (solid/substep_levels.h), which advances a band of ~2 × block levels through up to 20
+// sub-steps while it is in the core's cache (2 barriers per block + 1 between blocks); the
+// per-sub-step powers are then summed in particle order after each block. Same bits
+// (tests/unit/test_solid_substep.cpp, docs/validation.md "Solid sub-step", session 15).
 #pragma once
 #include <cstddef>
 
@@ -59,10 +65,21 @@ class Executor;
 // 2 threads next to a busy core: 18.2 s), results bit-identical (docs/model.md §5).
 constexpr std::size_t kSubstepParticlesPerThread = 1000;
 
+// Bodies of at least this many particles take the wavefront schedule of the sub-steps
+// (elastic_substep.cpp) when it applies (no Eulerian switch, two or more sub-steps, a level
+// structure narrow enough for the cache); smaller ones the two-pass schedule. Both give the
+// same bits.
+constexpr std::size_t kSubstepWavefrontParticles = 20000;
+
+// Which schedule runs the sub-steps: Auto (by the rule above) or one forced (tests,
+// benchmarks); Wavefront still falls back to TwoPass where it does not apply.
+enum class SubstepSchedule { Auto, TwoPass, Wavefront };
+
 // `steps` sub-steps of size h [s] with the fluid force body.f_fluid and gravity g held; needs
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,
 // f_av, f_hg and the law's history at the end of the last sub-step and adds the sub-steps'
 // dissipated, hourglass and external work to the body's accumulators.
-void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec);
+void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
+                          SubstepSchedule schedule = SubstepSchedule::Auto);
 
 }  // namespace slamsph

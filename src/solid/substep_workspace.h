@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec.h"
+#include "solid/substep_levels.h"
 
 namespace slamsph {
 
@@ -62,8 +63,12 @@ struct SubstepWorkspace {
   std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
-  std::vector<SubstepPower> power;        // of the sub-step just completed
-  std::vector<Vec2> vhalf;                // half-step velocity
+  // Of the sub-step just completed (two-pass schedule) or, wavefront schedule, one row of n
+  // per sub-step of the block.
+  std::vector<SubstepPower> power;
+  std::vector<SubstepPower> step_sums;  // wavefront: the sums of each sub-step's powers
+  SubstepLevels levels;                 // wavefront: the pair graph's levels
+  std::vector<Vec2> vhalf;              // half-step velocity
   // With an Eulerian switch only (otherwise updated in place): v½ and x after the next kick
   // and drift, swapped with vhalf and body.x after pass 2.
   std::vector<Vec2> vhalf_next;
@@ -81,7 +86,7 @@ struct SubstepWorkspace {
     gsum.resize(particles);
     mats.resize(particles);
     fext.resize(particles);
-    power.resize(particles);
+    if (power.size() < particles) power.resize(particles);  // the wavefront keeps more
     vhalf.resize(particles);
   }
 };
