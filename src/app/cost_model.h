@@ -94,8 +94,11 @@ struct CostConstants {
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
   // 60 000-particle ring of bench_solid runs 1.69x slower per pair entry than the 10 052 one
   // (BM_RingSubsteps, 1 thread, medians of 3, session 13: 29.1 against 17.2 ns per entry;
-  // session 12 on another machine of this kind 1.95x; docs/validation.md §6).
-  double solid_pair_ns_large = 54.0;
+  // session 12 on another machine of this kind 1.95x; docs/validation.md §6). Since session 15
+  // a body of >= 20 000 particles without an Eulerian switch takes its sub-steps in a
+  // wavefront of up to 20 per sweep (solid/substep_levels.h): the 60 000-particle ring 1.45-
+  // 1.55x faster on 1 thread (benchmark CPU time, alternated): 54 / 1.5 = 36 ns.
+  double solid_pair_ns_large = 36.0;
   // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
   // with the symplectic step): the two fits gave 8 and 140 ns (poorly determined by 60-step
   // runs); 60 ns reproduces the one-sub-step-per-step cases (oscillating plate, tension bar:
