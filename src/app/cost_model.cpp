@@ -270,12 +270,12 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   if (c.fluid_particles > 0) {
     double pair_ns = log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_ns_small,
                                      k.water_pair_ns_large);
-    if (sim.stepper().system().kernel_f.type() == KernelType::WendlandC2 &&
-        gsph_band_avx2_available())
+    // The lane loops run for the Wendland kernel only (fluid/gsph_pair_band.h).
+    const bool wendland = sim.stepper().system().kernel_f.type() == KernelType::WendlandC2;
+    if (wendland && gsph_band_avx2_available())
       pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_lanes_small,
                                  k.water_pair_lanes_large);
-    if (sim.stepper().system().kernel_f.type() == KernelType::WendlandC2 &&
-        gsph_band_avx512_available())
+    if (wendland && gsph_band_avx512_available())
       pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_eight_small,
                                  k.water_pair_eight_large);
     c.fluid_seconds = 1e-9 * steps * pass_factor *
