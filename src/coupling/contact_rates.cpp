@@ -33,7 +33,7 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
   // equal shares of the (cell-ordered) fluid would give to one thread. A listed pair (a
   // Riemann solution, or a skipped dry or back-facing pair) costs about 8 items without pairs
   // (perf of the 3 200-particle dam break on 2 threads: with 1 the first thread took 2.5x the
-  // second's time, with 8 within 3 %; docs/validation.md §6, Threads, Session 15).
+  // second's time, with 8 within 3-13 % in two runs; docs/validation.md §6, Threads, Session 15).
   exec.for_each_weighted(
       f.size(), fc.start.data(),
       [&](std::size_t i) {
