@@ -1,5 +1,6 @@
 #include "app/fsi_stepper.h"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "coupling/virtual_pressure.h"
 #include "coupling/wall_acceleration.h"
 #include "fluid/gsph_fluid_rates.h"
+#include "solid/elastic_substep.h"
 
 namespace slamsph {
 
@@ -31,7 +33,8 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
 }
 
 // The order of the operators is documented in the header; do not reorder.
-void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass) {
+void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
+                                bool fluid_pass_done) {
   FluidParticles& fluid = sys_.fluid;
   ContactParticles& contact = sys_.contact;
   // A failed set that grew re-plans the ghosts around it (coupling/failure_zone_ghosts.h):
@@ -47,10 +50,10 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass)
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
     apply_wall_acceleration(contact, sys_.layout, b, sys_.bodies[b], prm_.wall_acceleration);
   clock.lap(t.contact);
-  lists_->update(fluid, contact, exec_, replanned);
+  // A rebuild reorders the fluid and its pairs: a water pass done beside the bodies' sub-steps
+  // on the old lists is done again (its sums would come in another order).
+  if (lists_->update(fluid, contact, exec_, replanned)) fluid_pass_done = false;
   clock.lap(t.neighbour_lists);
-  const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
-                      prm_.hydrostatic_correction};
   const ContactParams cp{sys_.eos.c0,
                          prm_.limiter_omega,
                          prm_.viscosity,
@@ -62,7 +65,15 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass)
     compute_virtual_state(contact, fluid, lists_->cf(), sys_.kernel_c, sys_.eos, prm_.gravity,
                           exec_);
     clock.lap(t.contact);
-    compute_gsph_fluid_rates(fluid, lists_->ff(), sys_.kernel_f, gp, exec_, pass);
+    const auto start = std::chrono::steady_clock::now();
+    if (!fluid_pass_done) fluid_pass(pass);
+    if (pending_) {
+      pending_->record(
+          pending_beside_,
+          pending_seconds_ +
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      pending_ = nullptr;
+    }
     clock.lap(t.fluid_rates);
     add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_, pass,
                          &contact_pairs_);
@@ -86,6 +97,54 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass)
   for (std::size_t c = 0; c < contact.size(); ++c)
     loads_[contact.body[c]].viscous += contact.force_viscous[c];
   clock.lap(t.contact);
+}
+
+void FsiStepper::fluid_pass(RatePass pass) {
+  const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
+                      prm_.hydrostatic_correction};
+  compute_gsph_fluid_rates(sys_.fluid, lists_->ff(), sys_.kernel_f, gp, exec_, pass);
+}
+
+bool FsiStepper::bodies_beside_fluid_pass() const {
+  const std::size_t nf = sys_.fluid.size();
+  if (exec_.threads() < 2 || nf == 0 || dual_.bodies_share_step(nf)) return false;
+  bool elastic = false;
+  for (const SolidBody& b : sys_.bodies) {
+    if (!b.is_elastic()) continue;
+    if (exec_.threads_for(b.size(), kSubstepParticlesPerThread) > 1) return false;
+    elastic = true;
+  }
+  return elastic && lists_->fluid_within_skin(sys_.fluid, exec_);
+}
+
+bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
+  const std::size_t nf = sys_.fluid.size();
+  const bool subcycled = !dual_.bodies_share_step(nf);
+  const bool average = prm_.substep_average && subcycled;
+  auto bodies = [&] {
+    for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+      if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
+    solid_substeps_ += dual_.advance(sys_.bodies, t, dt, prm_.gravity, subcycled, exec_);
+  };
+  const bool eligible = bodies_beside_fluid_pass();
+  BesideChoice& choice = beside_choice_[static_cast<std::size_t>(next)];
+  const bool beside = eligible && choice.beside();
+  const auto start = std::chrono::steady_clock::now();
+  if (beside)
+    exec_.concurrently(bodies, [&] { fluid_pass(next); });
+  else
+    bodies();
+  // The pass still to come in evaluate_rates() completes the measurement (BesideChoice).
+  pending_ = eligible ? &choice : nullptr;
+  pending_beside_ = beside;
+  pending_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // A body that blew up during its sub-steps is reported here, as a divergence with the
+  // particle, before the neighbour rebuild in evaluate_rates() meets non-finite positions.
+  check_bodies(t + dt);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
+    if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], dt);
+  return beside;
 }
 
 void FsiStepper::step() {
@@ -133,20 +192,10 @@ void FsiStepper::step() {
       },
       Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
-  const bool average = prm_.substep_average && !dual_.bodies_share_step(f.size());
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
-  solid_substeps_ += dual_.advance(sys_.bodies, time_, dt, prm_.gravity,
-                                   !dual_.bodies_share_step(f.size()), exec_);
-  clock.lap(t.solid_substeps);
-  // A body that blew up during its sub-steps is reported here, as a divergence with the
-  // particle, before the neighbour rebuild in evaluate_rates() meets non-finite positions.
-  check_bodies(time_ + dt);
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], dt);
+  const bool fluid_done = advance_bodies(time_, dt, RatePass::Both);
   time_ += dt;
-  clock.lap(t.checks_and_zone);
-  evaluate_rates(clock, t);
+  clock.lap(t.solid_substeps);
+  evaluate_rates(clock, t, RatePass::Both, fluid_done);
   dual_.correct(sys_.bodies, dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
@@ -186,18 +235,6 @@ void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t) {
 // sub-steps it is a velocity step with the mid-step force. Each pass sees the water and the
 // bodies at the same time: the momentum pass at t_n+1/2 (the sub-step averages of that half),
 // the continuity pass at t_n+1.
-void FsiStepper::advance_bodies_half(double t, double hdt) {
-  const std::size_t nf = sys_.fluid.size();
-  const bool average = prm_.substep_average && !dual_.bodies_share_step(nf);
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    if (average && sys_.bodies[b].is_elastic()) averages_[b].begin(sys_.bodies[b]);
-  solid_substeps_ +=
-      dual_.advance(sys_.bodies, t, hdt, prm_.gravity, !dual_.bodies_share_step(nf), exec_);
-  check_bodies(t + hdt);
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b)
-    if (average && sys_.bodies[b].is_elastic()) averages_[b].end(sys_.bodies[b], hdt);
-}
-
 void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& f = sys_.fluid;
   const TaitEos& eos = sys_.eos;
@@ -211,9 +248,9 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
       },
       Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
-  advance_bodies_half(time_, hdt);
+  bool fluid_done = advance_bodies(time_, hdt, RatePass::Momentum);
   clock.lap(t.solid_substeps);
-  evaluate_rates(clock, t, RatePass::Momentum);
+  evaluate_rates(clock, t, RatePass::Momentum, fluid_done);
   dual_.correct(sys_.bodies, dt);  // dt/2 (F_n+1/2 - F_n-1/2): the first half's correction
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
@@ -225,11 +262,11 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
       },
       Executor::kMinParallelCheap);
   clock.lap(t.fluid_integration);
-  advance_bodies_half(time_ + hdt, hdt);
+  fluid_done = advance_bodies(time_ + hdt, hdt, RatePass::Continuity);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   time_ += dt;
   clock.lap(t.solid_substeps);
-  evaluate_rates(clock, t, RatePass::Continuity);
+  evaluate_rates(clock, t, RatePass::Continuity, fluid_done);
   exec_.for_each(
       f.size(),
       [&](std::size_t i) {

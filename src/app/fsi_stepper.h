@@ -22,10 +22,24 @@
 //   7. update_leak_flags         fluid particles found inside a solid (leak counter)
 //   8. scatter_contact_forces    contact force → body.f_fluid (ghosts → their parent)
 //   9. body loads                total and viscous fluid force per body
+// Step 4 reads only the water (x, v, rho, p and the fluid–fluid pairs), which the bodies'
+// sub-steps do not touch: on two threads, when every sub-cycled elastic body is small enough
+// to take its sub-steps on one thread anyway (Executor::threads_for with
+// kSubstepParticlesPerThread, solid/elastic_substep.h), step 4 runs beside those sub-steps on
+// the other thread (Executor::concurrently), once the water has taken its part of the step,
+// when this run's timings say it is faster (app/beside_choice.h): the second thread then no
+// longer waits while a small body sub-cycles. Larger bodies keep both
+// threads for their sub-steps (the 2 500-particle skin: the same wall time either way, the
+// sub-steps on one thread outlasting the pass; docs/validation.md §6 "Threads", session 16).
+// A neighbour rebuild in step 2 (which reorders the water) discards that pass and step 4 runs
+// in its place; so the sums, and the results, are those of the serial order on any thread
+// count.
 #pragma once
+#include <array>
 #include <memory>
 #include <vector>
 
+#include "app/beside_choice.h"
 #include "app/dual_time_stepping.h"
 #include "app/phase_times.h"
 #include "app/time_step_limit.h"
@@ -152,11 +166,19 @@ class FsiStepper {
  private:
   // `pass` (fluid_integrator_kind.h): Continuity leaves the bodies' fluid force and loads as
   // the last momentum pass set them; Momentum leaves the leak flags.
-  void evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both);
+  // fluid_pass_done: step 4 was done beside the bodies (advance_bodies) for these lists.
+  void evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both,
+                      bool fluid_pass_done = false);
   void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
-  // Advances every body over [t, t + hdt] holding its fluid force (a half of the symplectic
-  // step), with the sub-step averages of that half.
-  void advance_bodies_half(double t, double hdt);
+  // Step 4 of the rate evaluation: the water–water GSPH pass.
+  void fluid_pass(RatePass pass);
+  // Whether advance_bodies() runs the water's pass beside the bodies (header comment).
+  bool bodies_beside_fluid_pass() const;
+  // Advances every body over [t, t + dt] holding its fluid force (the step, or a half of the
+  // symplectic step), with the sub-step averages of that interval, and checks the bodies;
+  // perhaps with the water pass `next` of the following evaluation beside it: returns
+  // whether it ran (pass it on to evaluate_rates).
+  bool advance_bodies(double t, double dt, RatePass next);
   // Both steps' end: the absorbing zone over the step, the step count, the state check.
   void end_step(double dt, PhaseClock& clock, PhaseTimes& t);
   void check_state() const;
@@ -182,6 +204,11 @@ class FsiStepper {
   std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
   Vec2 zone_momentum_;
   PhaseTimes times_;
+  // Per RatePass (the pass that runs beside): in turn or beside, by the times measured.
+  std::array<BesideChoice, 3> beside_choice_;
+  BesideChoice* pending_ = nullptr;  // an eligible advance whose pass is still to come
+  bool pending_beside_ = false;
+  double pending_seconds_ = 0.0;  // its wall seconds so far
 };
 
 }  // namespace slamsph

@@ -117,6 +117,29 @@ class Executor {
     region(t, [&](int rank) { f(Team(rank, t, &barriers_, pool)); });
   }
 
+  // a() and b() at the same time, a on the caller and b on a second thread of one region, or
+  // a() then b() on the caller when only one thread is available (one thread asked for, or
+  // Load::Adapt finds the other CPU taken, or called from inside a region). Loops inside
+  // either run serially (nested). For two independent tasks whose own loops scale poorly on
+  // two threads: a small body's sub-steps (two barriers per sub-step) beside the water's
+  // pair pass (app/fsi_stepper.h). a and b must not write what the other reads; each then
+  // computes what it would alone, on any thread count.
+  template <class A, class B>
+  void concurrently(A&& a, B&& b) const {
+    const int t = team_now(std::min(threads_, 2));
+    if (t == 1) {
+      a();
+      b();
+      return;
+    }
+    region(2, [&](int rank) {
+      if (rank == 0)
+        a();
+      else
+        b();
+    });
+  }
+
   SyncCounts sync_counts() const {
     return {regions_.load(std::memory_order_relaxed), barriers_.load(std::memory_order_relaxed),
             reduced_.load(std::memory_order_relaxed)};

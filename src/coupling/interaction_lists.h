@@ -24,6 +24,13 @@ class InteractionLists {
   bool update(FluidParticles& f, const ContactParticles& c, const Executor& exec,
               bool force = false);
 
+  // False if the next update() rebuilds because of the fluid (a fluid particle has moved
+  // half the skin, or the fluid changed size): update() may still rebuild for the contact
+  // particles. While true, ff() holds for the fluid's current positions whatever the
+  // contact does, up to such a rebuild (app/fsi_stepper.h: the water's pair pass beside
+  // the bodies' sub-steps).
+  bool fluid_within_skin(const FluidParticles& f, const Executor& exec) const;
+
   const BandedPairs& ff() const { return ff_; }  // fluid–fluid, each pair once
   const NeighbourList& fc() const { return fc_; }
   const NeighbourList& cf() const { return cf_; }
@@ -46,6 +53,8 @@ class InteractionLists {
 
  private:
   double cell_size() const;
+  // max |x_i - x_i at the last build|^2 over the fluid (sizes equal).
+  double fluid_displacement2(const FluidParticles& f, const Executor& exec) const;
   // Grids and lists from fluid positions xf (already in cell order) and contact xc; with
   // fluid_grid_ready the fluid grid already bins xf.
   void build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc, const Executor& exec,
