@@ -18,6 +18,11 @@
 
 namespace slamsph {
 
+// Measured: BesideChoice decides (the command line's runs). Always / Never: every eligible
+// advance beside the pass, or none (tests: the beside path, with the rebuilds that discard
+// its pass, against one thread).
+enum class BesideSchedule { Measured, Always, Never };
+
 class BesideChoice {
  public:
   // Decisions spent on each way at the start, and again on the way not taken every

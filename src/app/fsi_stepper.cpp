@@ -52,7 +52,10 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
   clock.lap(t.contact);
   // A rebuild reorders the fluid and its pairs: a water pass done beside the bodies' sub-steps
   // on the old lists is done again (its sums would come in another order).
-  if (lists_->update(fluid, contact, exec_, replanned)) fluid_pass_done = false;
+  if (lists_->update(fluid, contact, exec_, replanned) && fluid_pass_done) {
+    fluid_pass_done = false;
+    ++beside_redone_;
+  }
   clock.lap(t.neighbour_lists);
   const ContactParams cp{sys_.eos.c0,
                          prm_.limiter_omega,
@@ -128,7 +131,10 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
   };
   const bool eligible = bodies_beside_fluid_pass();
   BesideChoice& choice = beside_choice_[static_cast<std::size_t>(next)];
-  const bool beside = eligible && choice.beside();
+  const bool beside = eligible && (beside_schedule_ == BesideSchedule::Measured
+                                       ? choice.beside()
+                                       : beside_schedule_ == BesideSchedule::Always);
+  beside_advances_ += beside;
   const auto start = std::chrono::steady_clock::now();
   if (beside)
     exec_.concurrently(bodies, [&] { fluid_pass(next); });

@@ -141,6 +141,11 @@ class FsiStepper {
   // checkpointed: a resumed run reports its own segment.
   const PhaseTimes& phase_times() const { return times_; }
   const FsiParams& params() const { return prm_; }
+  void set_beside_schedule(BesideSchedule s) { beside_schedule_ = s; }
+  // Advances that ran beside the water's pass, and of those the ones whose pass a neighbour
+  // rebuild discarded (done again in turn).
+  long beside_advances() const { return beside_advances_; }
+  long beside_passes_redone() const { return beside_redone_; }
   void set_end_time(double t) { prm_.end_time = t; }
 
   const FsiSystem& system() const { return sys_; }
@@ -209,6 +214,8 @@ class FsiStepper {
   BesideChoice* pending_ = nullptr;  // an eligible advance whose pass is still to come
   bool pending_beside_ = false;
   double pending_seconds_ = 0.0;  // its wall seconds so far
+  BesideSchedule beside_schedule_ = BesideSchedule::Measured;
+  long beside_advances_ = 0, beside_redone_ = 0;
 };
 
 }  // namespace slamsph

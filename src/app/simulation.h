@@ -25,6 +25,10 @@ class Simulation {
 
   // One fluid step (with the bodies sub-cycled inside it). Throws DivergenceError.
   void step() { stepper_->step(); }
+  // Tests: how small bodies' sub-steps and the water's pass are scheduled (app/fsi_stepper.h).
+  void set_beside_schedule(BesideSchedule s) { stepper_->set_beside_schedule(s); }
+  long beside_advances() const { return stepper_->beside_advances(); }
+  long beside_passes_redone() const { return stepper_->beside_passes_redone(); }
   // The whole run with outputs; returns the process exit code (0 ok, 3 diverged).
   int run();
   // After run(): true if the run reached end_time (not diverged, not stopped early).

@@ -70,9 +70,13 @@ void expect_identical(const Simulation& s1, const Simulation& s2) {
 
 // Steps both simulations in lock step, comparing the whole state every `every` steps so
 // a difference is reported at the step it appears.
-void run_and_compare(const CaseConfig& cfg, long steps, long every) {
+// beside: the 2-thread run's schedule of small bodies' sub-steps and the water's pass
+// (app/fsi_stepper.h); with Always the run must have taken that path, rebuilds included.
+void run_and_compare(const CaseConfig& cfg, long steps, long every,
+                     BesideSchedule beside = BesideSchedule::Measured) {
   Simulation s1(cfg, silent_options(1));
   Simulation s2(cfg, silent_options(2));
+  s2.set_beside_schedule(beside);
   ASSERT_GT(s1.fluid().size(), 256u) << "too few particles to exercise the parallel loops";
   expect_identical(s1, s2);
   for (long n = 1; n <= steps; ++n) {
@@ -90,6 +94,13 @@ void run_and_compare(const CaseConfig& cfg, long steps, long every) {
   EXPECT_GT(vmax, 1e-3);
   std::printf("%s: %zu fluid particles, %ld steps to t = %.4g s, max |v| = %.3g m/s\n",
               cfg.name.c_str(), s1.fluid().size(), s1.steps(), s1.time(), vmax);
+  if (beside == BesideSchedule::Always) {
+    EXPECT_EQ(s1.beside_advances(), 0);  // one thread: always in turn
+    std::printf("2 threads: %ld advances beside the water's pass, %ld passes redone\n",
+                s2.beside_advances(), s2.beside_passes_redone());
+    EXPECT_GT(s2.beside_advances(), 0);
+    EXPECT_GT(s2.beside_passes_redone(), 0) << "no rebuild met a pass done beside";
+  }
 }
 
 std::string slurp(const fs::path& p) {
@@ -142,6 +153,22 @@ TEST(AppThreads, ElasticCylinderEntryBitIdenticalFor1And2Threads) {
   for (int n = 0; n < 20; ++n) probe.step();
   // The cylinder feels the water (so the body-force comparison above is not of zeros).
   EXPECT_GT(norm(probe.body_load(1).total), 1.0);
+}
+
+// A small body's sub-steps beside the water's pass (app/fsi_stepper.h), in every advance,
+// both steps: the pass computed on the lists of the step's start, done again whenever the
+// neighbour lists rebuild and reorder the water, gives the one-thread bits. The gate's water
+// runs out under it and reorders within the first 400 steps (without the pass done again
+// after a rebuild the symplectic run differs from step ~290 on).
+TEST(AppThreads, SubstepsBesideTheWaterPassBitIdenticalToOneThread) {
+  CaseConfig cfg = load_case(std::string(SLAMSPH_SOURCE_DIR) + "/cases/elastic_gate.toml");
+  cfg.numerics.dx = 0.0025;  // 2 240 water particles, a 2 x 34 particle gate
+  cfg.numerics.fluid_integrator = FluidIntegrator::Symplectic;
+  cfg.numerics.cfl = 0.5;
+  run_and_compare(cfg, 400, 50, BesideSchedule::Always);
+  cfg.numerics.fluid_integrator = FluidIntegrator::KickDriftKick;
+  cfg.numerics.cfl = 0.25;
+  run_and_compare(cfg, 400, 50, BesideSchedule::Always);
 }
 
 TEST(AppThreads, BinaryWritesIdenticalForcesAndProbesFor1And2Threads) {
