@@ -180,9 +180,22 @@ Spread spread_at_rest(const Columns& col, const ContactParticles& contact, doubl
 double CostPrediction::wall_seconds(int threads) const {
   if (threads <= 1) return cpu_seconds();
   double w = (fluid_seconds + lists_seconds + contact_seconds) / fluid_speedup;
-  for (const BodyCost& b : bodies)
-    if (b.elastic) w += b.seconds / b.speedup;
-  return w;
+  double solid = 0.0;
+  bool one_thread_bodies = true;
+  for (const BodyCost& b : bodies) {
+    if (!b.elastic) continue;
+    solid += b.seconds / b.speedup;
+    one_thread_bodies = one_thread_bodies && b.speedup == 1.0;
+  }
+  // Bodies whose sub-steps take one thread run them beside the water's pair pass when that
+  // is faster (app/beside_choice.h): the pass then takes its one-thread time beside them
+  // instead of its share of the water phase after them.
+  if (one_thread_bodies && solid > 0.0 && water_pass_seconds > 0.0) {
+    const double in_turn = solid + water_pass_seconds / fluid_speedup;
+    const double beside = std::max(solid, water_pass_seconds);
+    return w - water_pass_seconds / fluid_speedup + std::min(in_turn, beside);
+  }
+  return w + solid;
 }
 
 CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
@@ -278,8 +291,9 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
     if (wendland && gsph_band_avx512_available())
       pair_ns *= log_interpolate(nw, k.water_n_small, k.water_n_large, k.water_pair_eight_small,
                                  k.water_pair_eight_large);
-    c.fluid_seconds = 1e-9 * steps * pass_factor *
-                      (pair_ns * static_cast<double>(c.water_pairs) + k.water_ns * nw);
+    c.water_pass_seconds =
+        1e-9 * steps * pass_factor * pair_ns * static_cast<double>(c.water_pairs);
+    c.fluid_seconds = c.water_pass_seconds + 1e-9 * steps * pass_factor * k.water_ns * nw;
     const FsiStepper& st = sim.stepper();
     const double per_rebuild =
         v * dt > 0.0 ? st.params().neighbour_skin * st.system().kernel_c.h() / (v * dt)

@@ -51,7 +51,10 @@
 //             the caches)
 // The wall time on T threads divides the water, lists and contact phases by the measured
 // two-thread speed-up S_f(N_water) and each body's sub-steps by S_s(N_b) when its team has
-// two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise. This
+// two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise; when every
+// elastic body's team has one thread, the water's pair pass takes min(S + P/S_f, max(S, P))
+// with the sub-steps S (app/fsi_stepper.h: beside them or after them, whichever the run
+// measures faster). This
 // machine kind has two cores: T > 2 is predicted as T = 2.
 #pragma once
 #include <string>
@@ -163,7 +166,8 @@ struct CostPrediction {
   long rebuilds = 0;        // neighbour-list rebuilds to the end time
   long solid_substeps = 0;  // over the run, all elastic bodies
   double fluid_seconds = 0.0, lists_seconds = 0.0, contact_seconds = 0.0, solid_seconds = 0.0;
-  double fluid_speedup = 1.0;  // of the water, lists and contact phases on two threads
+  double water_pass_seconds = 0.0;  // the pair pass's part of fluid_seconds
+  double fluid_speedup = 1.0;       // of the water, lists and contact phases on two threads
   double cpu_seconds() const {
     return fluid_seconds + lists_seconds + contact_seconds + solid_seconds;
   }
