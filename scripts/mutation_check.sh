@@ -10,7 +10,8 @@
 # eight-lane fluid loops against the scalar one (since session 14 the fluid mutations are made
 # in each loop: on an AVX2 CPU the four-lane one runs, since session 15 the eight-lane one on an
 # AVX-512F CPU, and a change to one loop alone breaks their bit identity; it comes last so that
-# a physics test is named first when one catches it). Only these and slamsph are
+# a physics test is named first when one catches it), then (session 16) the solid law and
+# the fused solid sub-step against the operator sequence. Only these and slamsph are
 # rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -21,7 +22,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_app_threads"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -95,6 +96,11 @@ M = [
   "    s.t.push_back(tk - s.t0);", "    s.t.push_back(tk - t_body.front());"),
  ("beside: water pass kept across a rebuild", "src/app/fsi_stepper.cpp",
   "    fluid_pass_done = false;", "    (void)fluid_pass_done;"),
+ # Session 16: the SVK law inlined in its header and the sub-step's pass-2 tail in two lanes.
+ ("SVK: lambda tr E left out of S_yy", "src/solid/materials/st_venant_kirchhoff.h",
+  "  S.yy += l;", "  S.yy += 0.0 * l;"),
+ ("sub-step: viscous power at the half-step velocity", "src/solid/elastic_substep.cpp",
+  "dot2(fav * vi)", "dot2(fav * vhi)"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

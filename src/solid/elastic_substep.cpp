@@ -315,33 +315,41 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       }
       const SubstepParticleMats& mi = mats[i];
       const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
-      Vec2 fsv, favv, fhg;
-      simd::store(favv, fav);
-      simd::store(fsv, simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs);
-      if constexpr (kHourglass)
-        simd::store(fhg, simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad);
+      // The tail in two-lane arithmetic as well (each lane rounds as the Vec2 form below it
+      // replaced: fi = (fs + fav) + fhg, a = (fi + fext) / m, v = v½ + (h/2) a, the dots as
+      // x·x + y·y), so that a, v, the powers and the kick and drift are formed once each.
+      v2d fsv = simd::load(mi.vp_c0) * gsx + simd::load(mi.vp_c1) * gsy - fs;
+      v2d fhg{0.0, 0.0};
+      if constexpr (kHourglass) fhg = simd::load(mi.g_c0) * gsx + simd::load(mi.g_c1) * gsy - grad;
       if constexpr (eulerian) {
         Vec2 fse, fve;
         eulerian_force_on(body, x, vh, body.eulerian.stress_map, i, fse, fve, heat);
-        fsv += fse;
-        favv += fve;
+        fsv += simd::load(fse);
+        fav += simd::load(fve);
       }
       energy[i] += h * (stress_power[i] + heat / m[i]);
       // Forces, acceleration and velocity are body state only at the end of the call (and
       // read by the Eulerian operators): in between they live in registers and w.power.
-      const Vec2 fi = fsv + favv + fhg;
-      const Vec2 ai = clamped[i] ? Vec2{} : (fi + fext[i]) / m[i];
-      const Vec2 vi = clamped[i] ? clamp_v[i] : vh[i] + hh * ai;
-      pw = {dot(favv, vi), dot(fhg, vi), dot(fext[i], vh[i]),
-            clamped[i] ? dot(fi + fext[i], clamp_v[i]) : 0.0};
+      const v2d fi = fsv + fav + fhg;
+      const v2d fe = simd::load(fext[i]), vhi = simd::load(vh[i]);
+      const bool held = clamped[i];
+      const v2d ai = held ? v2d{0.0, 0.0} : (fi + fe) / simd::splat(m[i]);
+      const v2d vi = held ? simd::load(clamp_v[i]) : vhi + simd::splat(hh) * ai;
+      auto dot2 = [](v2d p) { return p[0] + p[1]; };
+      pw = {dot2(fav * vi), dot2(fhg * vi), dot2(fe * vhi), held ? dot2((fi + fe) * vi) : 0.0};
       if (eulerian || !more) {
-        f_av[i] = favv;
-        f_hg[i] = fhg;
-        f_int[i] = fi;
-        a[i] = ai;
-        v[i] = vi;
+        simd::store(f_av[i], fav);
+        simd::store(f_hg[i], fhg);
+        simd::store(f_int[i], fi);
+        simd::store(a[i], ai);
+        simd::store(v[i], vi);
       }
-      if (more) kick_drift(i, vi, ai, x, vhn, xn);
+      if (more) {
+        // kick_drift: a clamped particle at the clamp's velocity (vi), others v½ = v + (h/2) a.
+        const v2d vn = held ? vi : vi + simd::splat(hh) * ai;
+        simd::store(vhn[i], vn);
+        simd::store(xn[i], simd::load(x[i]) + simd::splat(h) * vn);
+      }
     };
     if (block == 0) {
       // Two passes over the team's share per sub-step, a barrier after each.

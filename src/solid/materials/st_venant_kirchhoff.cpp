@@ -10,25 +10,6 @@ SvkParameters svk_from_young(double youngs_modulus, double poisson_ratio) {
           youngs_modulus / (2.0 * (1.0 + nu))};
 }
 
-Mat2 green_lagrange(const Mat2& F) {
-  Mat2 E = transpose(F) * F;
-  E -= Mat2::identity();
-  E *= 0.5;
-  return E;
-}
-
-Mat2 svk_pk2(const SvkParameters& p, const Mat2& E) {
-  Mat2 S = 2.0 * p.mu * E;
-  const double l = p.lambda * trace(E);
-  S.xx += l;
-  S.yy += l;
-  return S;
-}
-
-Mat2 svk_pk1(const SvkParameters& p, const Mat2& F) {
-  return F * svk_pk2(p, green_lagrange(F));
-}
-
 double svk_strain_energy_density(const SvkParameters& p, const Mat2& F) {
   const Mat2 E = green_lagrange(F);
   const double tr = trace(E);

@@ -29,12 +29,28 @@ struct SvkParameters {
 // Lamé parameters from Young's modulus E [Pa] and Poisson's ratio ν [-].
 SvkParameters svk_from_young(double youngs_modulus, double poisson_ratio);
 
+// Inline (here, not in the .cpp): the fused sub-step calls svk_pk1 once per particle per
+// sub-step, and an out-of-line call there spills every live vector register around it (all
+// are caller-saved); inlined, the same operations in the same order (same bits).
 // Green–Lagrange strain ½(FᵀF − I).
-Mat2 green_lagrange(const Mat2& F);
+inline Mat2 green_lagrange(const Mat2& F) {
+  Mat2 E = transpose(F) * F;
+  E -= Mat2::identity();
+  E *= 0.5;
+  return E;
+}
 // Second Piola–Kirchhoff stress from the Green–Lagrange strain.
-Mat2 svk_pk2(const SvkParameters& p, const Mat2& E);
+inline Mat2 svk_pk2(const SvkParameters& p, const Mat2& E) {
+  Mat2 S = 2.0 * p.mu * E;
+  const double l = p.lambda * trace(E);
+  S.xx += l;
+  S.yy += l;
+  return S;
+}
 // First Piola–Kirchhoff stress P = F S.
-Mat2 svk_pk1(const SvkParameters& p, const Mat2& F);
+inline Mat2 svk_pk1(const SvkParameters& p, const Mat2& F) {
+  return F * svk_pk2(p, green_lagrange(F));
+}
 // Strain energy per unit reference volume [J/m^3].
 double svk_strain_energy_density(const SvkParameters& p, const Mat2& F);
 // Out-of-plane Cauchy stress σ_zz = λ tr(E_GL) / det F [Pa].
