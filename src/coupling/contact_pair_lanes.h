@@ -71,9 +71,12 @@ constexpr std::uint32_t kContactLaneChunk = 128;
 bool contact_lanes_avx2_available();
 bool contact_lanes_avx512_available();
 
-// Fluid particles [i_begin, i_end), none with more than kContactLaneChunk listed partners:
-// the scalar loop of contact_rates.cpp for the Wendland kernel. Only call them when available.
-void contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_end);
-void contact_to_fluid_avx512(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_end);
+// Fluid particles [i_begin, i_end) up to the first with more than kContactLaneChunk listed
+// partners: the scalar loop of contact_rates.cpp for the Wendland kernel. Returns that particle
+// (i_end if none), for the caller to run through the scalar loop. Only call them when available.
+std::uint32_t contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_begin,
+                                    std::uint32_t i_end);
+std::uint32_t contact_to_fluid_avx512(const ContactLaneData& d, std::uint32_t i_begin,
+                                      std::uint32_t i_end);
 
 }  // namespace slamsph

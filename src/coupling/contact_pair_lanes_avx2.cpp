@@ -53,11 +53,9 @@ bool contact_lanes_avx2_available() {
   return __builtin_cpu_supports("avx2");
 }
 
-void contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_end) {
-  if (d.viscous)
-    to_fluid<true>(d, i_begin, i_end);
-  else
-    to_fluid<false>(d, i_begin, i_end);
+std::uint32_t contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_begin,
+                                    std::uint32_t i_end) {
+  return d.viscous ? to_fluid<true>(d, i_begin, i_end) : to_fluid<false>(d, i_begin, i_end);
 }
 
 }  // namespace slamsph
@@ -70,7 +68,9 @@ bool contact_lanes_avx2_available() {
   return false;
 }
 
-void contact_to_fluid_avx2(const ContactLaneData&, std::uint32_t, std::uint32_t) {}
+std::uint32_t contact_to_fluid_avx2(const ContactLaneData&, std::uint32_t, std::uint32_t i_end) {
+  return i_end;
+}
 
 }  // namespace slamsph
 

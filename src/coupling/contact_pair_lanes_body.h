@@ -44,11 +44,13 @@ inline unsigned pack(const ContactLaneData& d, Chunk& c, std::uint32_t i, double
     const double dxx = xi - d.xs[s].x, dxy = yi - d.xs[s].y;
     const double r2 = dxx * dxx + dxy * dxy;
     // The scalar loop's tests: wetted, ContactParticles::faces, then r2 inside the support
-    // and not zero (contact_pair).
-    bool acts = d.wetted[s] != 0 && !(r2 >= support2) && !(r2 == 0.0);
+    // and not zero (contact_pair). Combined without branches (a third of the listed pairs
+    // are the lists' skin, so a branch per test is mispredicted often).
+    unsigned acts = static_cast<unsigned>(d.wetted[s] != 0) &
+                    static_cast<unsigned>(!(r2 >= support2)) & static_cast<unsigned>(r2 != 0.0);
     if (d.ghost[s])
-      acts =
-          acts && (xi - d.anchor[s].x) * d.normal[s].x + (yi - d.anchor[s].y) * d.normal[s].y > 0.0;
+      acts &= static_cast<unsigned>(
+          (xi - d.anchor[s].x) * d.normal[s].x + (yi - d.anchor[s].y) * d.normal[s].y > 0.0);
     c.s[n] = s;
     c.k[n] = k;
     c.dxx[n] = dxx;
@@ -59,7 +61,7 @@ inline unsigned pack(const ContactLaneData& d, Chunk& c, std::uint32_t i, double
     c.rhoi[n] = rhoi;
     c.pi[n] = pi;
     c.Vi[n] = Vi;
-    n += acts ? 1u : 0u;
+    n += acts;
   }
   return n;
 }
@@ -202,11 +204,12 @@ inline void sums(const ContactLaneData& d, const Chunk& c, const std::uint32_t* 
   }
 }
 
-// Fluid particles [i_begin, i_end), none with more than kChunk listed partners: chunks of at
-// most kChunk listed (so at most kChunk packed) pairs. A particle without listed partners is
+// Fluid particles [i_begin, i_end) up to the first with more than kChunk listed partners:
+// chunks of at most kChunk listed (so at most kChunk packed) pairs. Returns that particle (or
+// i_end): the caller runs it through the scalar loop. A particle without listed partners is
 // skipped as by the scalar loop (its sums untouched, not even += 0).
 template <bool kViscous>
-void to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_end) {
+std::uint32_t to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_end) {
   Chunk c;
   std::uint32_t ids[kChunk];  // the chunk's fluid particles
   unsigned count = 0, n = 0, listed_n = 0;
@@ -218,9 +221,11 @@ void to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_e
     n = 0;
     listed_n = 0;
   };
-  for (std::uint32_t i = i_begin; i < i_end; ++i) {
+  std::uint32_t i = i_begin;
+  for (; i < i_end; ++i) {
     const std::uint32_t listed = d.start[i + 1] - d.start[i];
     if (listed == 0) continue;
+    if (listed > kChunk) break;
     if (listed_n + listed > kChunk || count == kChunk) run();
     n = pack(d, c, i, d.mf[i] / d.rhof[i], n);  // Vi = m_i / rho_i, as the scalar loop
     listed_n += listed;
@@ -228,6 +233,7 @@ void to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uint32_t i_e
     c.first[++count] = n;
   }
   if (count > 0) run();
+  return i;
 }
 
 }  // namespace

@@ -108,12 +108,11 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
   const auto scalar = [&](std::size_t i) {
     to_fluid_one<kViscous>(f, c, fc, kernel, prm, momentum, continuity, keep, i);
   };
-  const auto lanes = [&d, eight](std::size_t b, std::size_t e) {
-    if (b == e) return;
-    if (eight)
-      contact_to_fluid_avx512(d, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
-    else
-      contact_to_fluid_avx2(d, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
+  const auto lanes = [&d, eight](std::size_t b, std::size_t e) -> std::size_t {
+    return eight ? contact_to_fluid_avx512(d, static_cast<std::uint32_t>(b),
+                                           static_cast<std::uint32_t>(e))
+                 : contact_to_fluid_avx2(d, static_cast<std::uint32_t>(b),
+                                         static_cast<std::uint32_t>(e));
   };
   // Split by pairs: the fluid in contact is a few rows of cells next to the walls, which
   // equal shares of the (cell-ordered) fluid would give to one thread. A listed pair (a
@@ -128,15 +127,11 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
           return;
         }
         // A particle with more listed partners than a lane chunk holds (none in the shipped
-        // cases) goes through the scalar loop; the others in runs through the lanes.
-        std::size_t run = b;
-        for (std::size_t i = b; i < e; ++i)
-          if (fc.start[i + 1] - fc.start[i] > kContactLaneChunk) {
-            lanes(run, i);
-            scalar(i);
-            run = i + 1;
-          }
-        lanes(run, e);
+        // cases) goes through the scalar loop; the lanes return at it.
+        while (b < e) {
+          b = lanes(b, e);
+          if (b < e) scalar(b++);
+        }
       },
       kPairUnitsToFluid);
 }
