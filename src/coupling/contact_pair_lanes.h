@@ -79,28 +79,4 @@ std::uint32_t contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_be
 std::uint32_t contact_to_fluid_avx512(const ContactLaneData& d, std::uint32_t i_begin,
                                       std::uint32_t i_end);
 
-// The sums of the virtual state of contact particle s (compute_virtual_state,
-// coupling/virtual_pressure.cpp) over its listed fluid partners, W at a time: the kernel value
-// of each pair in lanes, the sums then added pair by pair in list order (a pair that does not
-// act adds +0, which leaves every sum as it is: none of them can be -0), so the same bits as the
-// scalar loop (CouplingContactLanes.VirtualSums*).
-struct VirtualLaneData {
-  const Vec2* xf;
-  const Vec2* vf;
-  const double* rhof;
-  const double* pf;
-  const Vec2* xs;
-  const std::uint8_t* ghost;
-  const Vec2* anchor;
-  const Vec2* normal;
-  const std::uint32_t* start;  // the contact–fluid lists
-  const std::uint32_t* index;
-  double inv_h;     // Kernel::inv_h()
-  double w_factor;  // Kernel::w(0), the Wendland kernel's normalisation
-};
-
-// out = {sum W, sum p W, sum rho W r (x, y), sum W v (x, y)} of contact particle s.
-void virtual_sums_avx2(const VirtualLaneData& d, std::uint32_t s, double* out);
-void virtual_sums_avx512(const VirtualLaneData& d, std::uint32_t s, double* out);
-
 }  // namespace slamsph

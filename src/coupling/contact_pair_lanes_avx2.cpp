@@ -58,10 +58,6 @@ std::uint32_t contact_to_fluid_avx2(const ContactLaneData& d, std::uint32_t i_be
   return d.viscous ? to_fluid<true>(d, i_begin, i_end) : to_fluid<false>(d, i_begin, i_end);
 }
 
-void virtual_sums_avx2(const VirtualLaneData& d, std::uint32_t s, double* out) {
-  virtual_sums(d, s, out);
-}
-
 }  // namespace slamsph
 
 #else  // not an x86-64 build with -mavx2: the scalar loop runs
@@ -75,8 +71,6 @@ bool contact_lanes_avx2_available() {
 std::uint32_t contact_to_fluid_avx2(const ContactLaneData&, std::uint32_t, std::uint32_t i_end) {
   return i_end;
 }
-
-void virtual_sums_avx2(const VirtualLaneData&, std::uint32_t, double*) {}
 
 }  // namespace slamsph
 

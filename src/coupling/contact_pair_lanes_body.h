@@ -236,65 +236,6 @@ std::uint32_t to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uin
   return i;
 }
 
-// The virtual state's sums of contact particle s (compute_virtual_state): per pair
-//   faces (ContactParticles::faces), r = x_s - x_f, w = Kernel::w(|r|) (Wendland: zero from
-//   q = 2 on), skipped when w <= 0; sum_w += w, sum_pw += p w, sum_rrw += (rho w) r, sum_vw += w v.
-// Lanes that do not act contribute +0 (selected, so also for a non-finite value there).
-inline void virtual_sums(const VirtualLaneData& d, std::uint32_t s, double* out) {
-  using V = Lanes::V;
-  constexpr unsigned W = Lanes::W;
-  const V zero = Lanes::splat(0.0);
-  const double xs = d.xs[s].x, ys = d.xs[s].y;
-  const bool ghost = d.ghost[s] != 0;
-  const double ax = d.anchor[s].x, ay = d.anchor[s].y, nx = d.normal[s].x, ny = d.normal[s].y;
-  double sum_w = 0.0, sum_pw = 0.0, rrwx = 0.0, rrwy = 0.0, vwx = 0.0, vwy = 0.0;
-  alignas(64) double cw[W], cpw[W], crx[W], cry[W], cvx[W], cvy[W];
-  const std::uint32_t end_k = d.start[s + 1];
-  for (std::uint32_t k = d.start[s]; k < end_k; k += W) {
-    const std::uint32_t left = end_k - k;
-    std::uint32_t j[W];
-    j[0] = d.index[k];
-    for (std::uint32_t l = 1; l < W; ++l) j[l] = l < left ? d.index[k + l] : j[0];
-    V xj, yj;
-    Lanes::load_pairs(&d.xf[0].x, j, xj, yj);
-    const V rx = xs - xj, ry = ys - yj;
-    const V rr = Lanes::sqrt(rx * rx + ry * ry);
-    // Kernel::w for the Wendland kernel: norm t^2 t^2 (2 q + 1), t = 1 - q/2, zero from q = 2.
-    const V q = rr * d.inv_h;
-    const V t = 1.0 - 0.5 * q;
-    const V t2 = t * t;
-    const V w = d.w_factor * t2 * t2 * (2.0 * q + 1.0);
-    auto use = ~(q >= 2.0) & ~(w <= zero);
-    if (ghost) use &= ((xj - ax) * nx + (yj - ay) * ny > zero);  // faces
-    if (!Lanes::any(use)) continue;
-    V vxj, vyj;
-    Lanes::load_pairs(&d.vf[0].x, j, vxj, vyj);
-    const V pj = Lanes::gather(d.pf, j), rhoj = Lanes::gather(d.rhof, j);
-    const V rw = rhoj * w;
-    Lanes::store(cw, use ? w : zero);
-    Lanes::store(cpw, use ? pj * w : zero);
-    Lanes::store(crx, use ? rw * rx : zero);
-    Lanes::store(cry, use ? rw * ry : zero);
-    Lanes::store(cvx, use ? w * vxj : zero);
-    Lanes::store(cvy, use ? w * vyj : zero);
-    const unsigned lanes = left < W ? left : W;
-    for (unsigned l = 0; l < lanes; ++l) {
-      sum_w += cw[l];
-      sum_pw += cpw[l];
-      rrwx += crx[l];
-      rrwy += cry[l];
-      vwx += cvx[l];
-      vwy += cvy[l];
-    }
-  }
-  out[0] = sum_w;
-  out[1] = sum_pw;
-  out[2] = rrwx;
-  out[3] = rrwy;
-  out[4] = vwx;
-  out[5] = vwy;
-}
-
 }  // namespace
 
 }  // namespace slamsph

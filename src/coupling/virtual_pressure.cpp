@@ -2,54 +2,30 @@
 
 #include <cmath>
 
-#include "coupling/contact_pair_lanes.h"
-
 namespace slamsph {
 
 void compute_virtual_state(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
                            const Kernel& kernel, const TaitEos& eos, Vec2 gravity,
-                           const Executor& exec, PairLoop loop) {
+                           const Executor& exec) {
   // Split by pairs (Executor::for_each_weighted): the wetted stretch of a surface is short. A
   // pair (a kernel value) costs about 2 contact particles without pairs (which still write
   // their dry state).
-  // The sums in vector lanes for the Wendland kernel where the CPU has them
-  // (coupling/contact_pair_lanes.h): the same bits (docs/validation.md §6, Throughput, Session 16).
-  const bool wendland = kernel.type() == KernelType::WendlandC2;
-  const bool eight = wendland && (loop == PairLoop::Auto || loop == PairLoop::EightLanes) &&
-                     contact_lanes_avx512_available();
-  const bool four = wendland && !eight && (loop == PairLoop::Auto || loop == PairLoop::FourLanes) &&
-                    contact_lanes_avx2_available();
-  const VirtualLaneData d{f.x.data(),      f.v.data(),      f.rho.data(),    f.p.data(),
-                          c.x.data(),      c.ghost.data(),  c.anchor.data(), c.normal.data(),
-                          cf.start.data(), cf.index.data(), kernel.inv_h(),  kernel.w(0.0)};
   exec.for_each_weighted(
       c.size(), cf.start.data(),
       [&](std::size_t s) {
         double sum_w = 0.0, sum_pw = 0.0;
         Vec2 sum_rrw, sum_vw;
-        if (eight || four) {
-          double sums[6];
-          if (eight)
-            virtual_sums_avx512(d, static_cast<std::uint32_t>(s), sums);
-          else
-            virtual_sums_avx2(d, static_cast<std::uint32_t>(s), sums);
-          sum_w = sums[0];
-          sum_pw = sums[1];
-          sum_rrw = {sums[2], sums[3]};
-          sum_vw = {sums[4], sums[5]};
-        } else {
-          const Vec2 xs = c.x[s];
-          for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
-            const std::uint32_t j = cf.index[k];
-            if (!c.faces(s, f.x[j])) continue;
-            const Vec2 r = xs - f.x[j];
-            const double w = kernel.w(std::sqrt(norm2(r)));
-            if (w <= 0.0) continue;
-            sum_w += w;
-            sum_pw += f.p[j] * w;
-            sum_rrw += (f.rho[j] * w) * r;
-            sum_vw += w * f.v[j];
-          }
+        const Vec2 xs = c.x[s];
+        for (std::uint32_t k = cf.start[s]; k < cf.start[s + 1]; ++k) {
+          const std::uint32_t j = cf.index[k];
+          if (!c.faces(s, f.x[j])) continue;
+          const Vec2 r = xs - f.x[j];
+          const double w = kernel.w(std::sqrt(norm2(r)));
+          if (w <= 0.0) continue;
+          sum_w += w;
+          sum_pw += f.p[j] * w;
+          sum_rrw += (f.rho[j] * w) * r;
+          sum_vw += w * f.v[j];
         }
         if (sum_w <= 0.0) {
           c.wetted[s] = 0;

@@ -9,16 +9,12 @@
 #include "core/parallel.h"
 #include "coupling/contact_particles.h"
 #include "fluid/fluid_particles.h"
-#include "fluid/gsph_fluid_rates.h"
 #include "fluid/tait_eos.h"
 
 namespace slamsph {
 
-// `loop` (gsph_fluid_rates.h, PairLoop): Auto sums in the contact's lanes
-// (coupling/contact_pair_lanes.h) for the Wendland kernel where the CPU has them, Scalar in the
-// scalar loop; the same bits.
 void compute_virtual_state(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
                            const Kernel& kernel, const TaitEos& eos, Vec2 gravity,
-                           const Executor& exec, PairLoop loop = PairLoop::Auto);
+                           const Executor& exec);
 
 }  // namespace slamsph

@@ -1,6 +1,5 @@
-// The contact's fluid-side loop and the virtual state's sums in vector lanes
-// (coupling/contact_pair_lanes.h) against the scalar loops they replace (contact_rates.cpp,
-// virtual_pressure.cpp). The fluid side: the same sums, pair forces kept for the reaction
+// The contact's fluid-side loop in vector lanes (coupling/contact_pair_lanes.h) against the
+// scalar loop it replaces (contact_rates.cpp): the same sums, pair forces kept for the reaction
 // and flags, bit for bit, for every pass, with and without viscosity, the static term, the
 // short-range barrier and the cavitation limit, on a disordered cloud over wall layers whose
 // lists carry a skin (pairs beyond the support), with dry particles, ghosts that face only part
@@ -189,31 +188,6 @@ void expect_bit_identical_to_the_scalar_loop(PairLoop loop, bool crowd) {
   EXPECT_GT(cavitating, 50);
 }
 
-// The virtual state (compute_virtual_state) with its sums in lanes against the scalar loop, on
-// the same scene: ghosts facing the water and facing away, the lists' skin, a crowd.
-void expect_virtual_state_bit_identical(PairLoop loop) {
-  for (const bool crowd : {false, true}) {
-    const Scene base = scene(crowd);
-    for (const Vec2 g : {Vec2{0.0, -9.81}, Vec2{1.5, -9.81}}) {
-      Scene lanes = base, scalar = base;
-      const TaitEos eos{1000.0, 30.0, 7.0};
-      compute_virtual_state(lanes.c, lanes.f, lanes.cf, lanes.k, eos, g, Executor(2), loop);
-      compute_virtual_state(scalar.c, scalar.f, scalar.cf, scalar.k, eos, g, Executor(1),
-                            PairLoop::Scalar);
-      int wet = 0;
-      for (std::size_t q = 0; q < base.c.size(); ++q) {
-        ASSERT_EQ(lanes.c.wetted[q], scalar.c.wetted[q]) << q;
-        ASSERT_TRUE(same_bits(lanes.c.p[q], scalar.c.p[q])) << q;
-        ASSERT_TRUE(same_bits(lanes.c.rho[q], scalar.c.rho[q])) << q;
-        ASSERT_TRUE(same_bits(lanes.c.v_noslip[q], scalar.c.v_noslip[q])) << q;
-        wet += lanes.c.wetted[q];
-      }
-      EXPECT_GT(wet, 100);
-      EXPECT_LT(wet, static_cast<int>(base.c.size()) - 30);  // the 32 ghosts facing away are dry
-    }
-  }
-}
-
 }  // namespace
 
 TEST(CouplingContactLanes, FourLanesAreBitIdenticalToTheScalarLoop) {
@@ -237,14 +211,4 @@ TEST(CouplingContactLanes, ListsLongerThanAChunkAreBitIdenticalToTheScalarLoop) 
 // What the runs use (Auto) is one of the two, or the scalar loop.
 TEST(CouplingContactLanes, AutoIsBitIdenticalToTheScalarLoop) {
   expect_bit_identical_to_the_scalar_loop(PairLoop::Auto, false);
-}
-
-TEST(CouplingContactLanes, VirtualSumsInFourLanesAreBitIdenticalToTheScalarLoop) {
-  if (!contact_lanes_avx2_available()) GTEST_SKIP() << "no AVX2 on this CPU or build";
-  expect_virtual_state_bit_identical(PairLoop::FourLanes);
-}
-
-TEST(CouplingContactLanes, VirtualSumsInEightLanesAreBitIdenticalToTheScalarLoop) {
-  if (!contact_lanes_avx512_available()) GTEST_SKIP() << "no AVX-512F on this CPU or build";
-  expect_virtual_state_bit_identical(PairLoop::EightLanes);
 }
