@@ -17,7 +17,7 @@ namespace slamsph {
 namespace {
 
 constexpr unsigned kChunk = kContactLaneChunk;
-constexpr unsigned kPad = 8;  // a full vector read at the last pair
+constexpr unsigned kPad = 16;  // a full vector written at the last pair (16 indices)
 
 struct Chunk {
   // Sweep 1: the pairs that act, in list order.
@@ -65,6 +65,64 @@ inline unsigned pack(const ContactLaneData& d, Chunk& c, std::uint32_t i, double
   }
   return n;
 }
+
+#if defined(__AVX512F__)
+// Sweep 1 in eight lanes (as the fluid's, fluid/gsph_pair_band_avx512.cpp): eight listed
+// partners at a time, r2 and the support test in lanes, the wetted and ghost flags read per lane
+// into bit masks (a ghost's facing test per lane, in the scalar loop's operations), and the
+// acting partners compressed into a register and stored whole (a compress to memory is slow on
+// Zen 4). The same pairs in the same order as pack().
+inline unsigned pack8(const ContactLaneData& d, Chunk& c, std::uint32_t i, double Vi, unsigned n) {
+  const __m512d zero = _mm512_setzero_pd(), support2 = _mm512_set1_pd(d.support2);
+  const double xi = d.xf[i].x, yi = d.xf[i].y;
+  const __m512d vxi = _mm512_set1_pd(d.vf[i].x), vyi = _mm512_set1_pd(d.vf[i].y);
+  const __m512d rhoi = _mm512_set1_pd(d.rhof[i]), pi = _mm512_set1_pd(d.pf[i]);
+  const __m512d Vis = _mm512_set1_pd(Vi);
+  const __m512i lane = _mm512_set_epi32(15, 14, 13, 12, 11, 10, 9, 8, 7, 6, 5, 4, 3, 2, 1, 0);
+  const std::uint32_t end_k = d.start[i + 1];
+  for (std::uint32_t k = d.start[i]; k < end_k; k += 8) {
+    const std::uint32_t left = end_k - k;
+    const __mmask8 listed = left >= 8 ? 0xFF : static_cast<__mmask8>((1u << left) - 1u);
+    const __m512i j16 = _mm512_maskz_loadu_epi32(static_cast<__mmask16>(listed), d.index + k);
+    std::uint32_t j[8];
+    j[0] = d.index[k];
+    for (std::uint32_t l = 1; l < 8; ++l) j[l] = l < left ? d.index[k + l] : j[0];
+    __m512d xs, ys;
+    Lanes::load_pairs(&d.xs[0].x, j, xs, ys);
+    const __m512d dxx = xi - xs, dxy = yi - ys;
+    const __m512d r2 = dxx * dxx + dxy * dxy;
+    // The scalar loop's tests: r2 inside the support and not zero (NaN kept), wetted, faces.
+    unsigned acts = _mm512_mask_cmp_pd_mask(
+        _mm512_mask_cmp_pd_mask(listed, r2, support2, _CMP_NGE_UQ), r2, zero, _CMP_NEQ_UQ);
+    unsigned wet = 0, ghost = 0;
+    for (unsigned l = 0; l < 8; ++l) {
+      wet |= static_cast<unsigned>(d.wetted[j[l]] != 0) << l;
+      ghost |= static_cast<unsigned>(d.ghost[j[l]] != 0) << l;
+    }
+    acts &= wet;
+    for (unsigned g = acts & ghost; g != 0; g &= g - 1) {
+      const unsigned l = static_cast<unsigned>(__builtin_ctz(g));
+      const std::uint32_t s = j[l];
+      if (!((xi - d.anchor[s].x) * d.normal[s].x + (yi - d.anchor[s].y) * d.normal[s].y > 0.0))
+        acts &= ~(1u << l);
+    }
+    const __mmask8 m = static_cast<__mmask8>(acts);
+    const __m512i ks = _mm512_add_epi32(_mm512_set1_epi32(static_cast<int>(k)), lane);
+    _mm512_storeu_si512(c.s + n, _mm512_maskz_compress_epi32(static_cast<__mmask16>(m), j16));
+    _mm512_storeu_si512(c.k + n, _mm512_maskz_compress_epi32(static_cast<__mmask16>(m), ks));
+    _mm512_storeu_pd(c.dxx + n, _mm512_maskz_compress_pd(m, dxx));
+    _mm512_storeu_pd(c.dxy + n, _mm512_maskz_compress_pd(m, dxy));
+    _mm512_storeu_pd(c.r2 + n, _mm512_maskz_compress_pd(m, r2));
+    _mm512_storeu_pd(c.vxi + n, vxi);
+    _mm512_storeu_pd(c.vyi + n, vyi);
+    _mm512_storeu_pd(c.rhoi + n, rhoi);
+    _mm512_storeu_pd(c.pi + n, pi);
+    _mm512_storeu_pd(c.Vi + n, Vis);
+    n += static_cast<unsigned>(__builtin_popcount(acts));
+  }
+  return n;
+}
+#endif
 
 // Sweep 2: the pairs [0, n) of the chunk, W at a time (the last group's extra lanes repeat
 // pair 0, computed and never summed).
@@ -227,7 +285,12 @@ std::uint32_t to_fluid(const ContactLaneData& d, std::uint32_t i_begin, std::uin
     if (listed == 0) continue;
     if (listed > kChunk) break;
     if (listed_n + listed > kChunk || count == kChunk) run();
-    n = pack(d, c, i, d.mf[i] / d.rhof[i], n);  // Vi = m_i / rho_i, as the scalar loop
+    const double Vi = d.mf[i] / d.rhof[i];  // m_i / rho_i, as the scalar loop
+#if defined(__AVX512F__)
+    n = pack8(d, c, i, Vi, n);
+#else
+    n = pack(d, c, i, Vi, n);
+#endif
     listed_n += listed;
     ids[count] = i;
     c.first[++count] = n;
