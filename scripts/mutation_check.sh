@@ -10,8 +10,10 @@
 # eight-lane fluid loops against the scalar one (since session 14 the fluid mutations are made
 # in each loop: on an AVX2 CPU the four-lane one runs, since session 15 the eight-lane one on an
 # AVX-512F CPU, and a change to one loop alone breaks their bit identity; it comes last so that
-# a physics test is named first when one catches it), then (session 16) the solid law and
-# the fused solid sub-step against the operator sequence. Only these and slamsph are
+# a physics test is named first when one catches it; since session 16 the same for the
+# contact's fluid-side loop in lanes, test_coupling_contact_lanes), then (session 16) the
+# solid law and the fused solid sub-step against the operator sequence, and the threads
+# tests (the water's pass beside small bodies' sub-steps). Only these and slamsph are
 # rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -22,7 +24,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -81,6 +83,12 @@ M = [
   "_mm512_store_pd(c.cj + e, Vi * (us - uR) * dwr_r);", "_mm512_store_pd(c.cj + e, 2.0 * Vi * (us - uR) * dwr_r);"),
  ("eight lanes: coincident partners packed", "src/fluid/gsph_pair_band_avx512.cpp",
   "r2, zero, _CMP_NEQ_UQ);", "r2, zero, _CMP_TRUE_UQ);"),
+ ("contact lanes: short-range barrier dropped", "src/coupling/contact_pair_lanes_body.h",
+  "    fx = fx + bx;", "    fx = fx + 0.0 * bx;"),
+ ("contact lanes: continuity ignores the cavitation limit", "src/coupling/contact_pair_lanes_body.h",
+  "u_star = cav ? u_lim : su;", "u_star = cav ? su + 0.0 * u_lim : su;"),
+ ("contact eight lanes: dry partners packed", "src/coupling/contact_pair_lanes_body.h",
+  "    acts &= wet;", "    (void)wet;"),
  ("contact static-term switch ignored", "src/coupling/contact_rates.cpp",
   "const Vec2 g_rel = prm.hydrostatic_correction ? prm.gravity - c.a[s] : Vec2{};",
   "const Vec2 g_rel = prm.gravity - c.a[s];"),

@@ -195,6 +195,23 @@ class Executor {
     });
   }
 
+  // for_each_weighted with f(begin, end) called once on each thread's share (the same shares):
+  // for loops that work on runs of items (coupling/contact_pair_lanes.h packs the pairs of
+  // consecutive items).
+  template <class F>
+  void for_ranges_weighted(std::size_t n, const std::uint32_t* work, F&& f,
+                           std::uint32_t pair_units = 1) const {
+    const int t = n < kMinParallel ? 1 : team_now(threads_);
+    if (t == 1) {
+      f(std::size_t{0}, n);
+      return;
+    }
+    region(t, [&](int rank) {
+      f(weighted_bound(n, work, pair_units, rank, t),
+        weighted_bound(n, work, pair_units, rank + 1, t));
+    });
+  }
+
   // Chunked variant: f(begin, end) on threads() contiguous ranges (the same ranges whatever
   // the threads that run them).
   template <class F>

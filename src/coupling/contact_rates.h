@@ -17,6 +17,7 @@
 #include "coupling/contact_particles.h"
 #include "fluid/fluid_integrator_kind.h"
 #include "fluid/fluid_particles.h"
+#include "fluid/gsph_fluid_rates.h"
 
 namespace slamsph {
 
@@ -42,9 +43,13 @@ struct ContactPairForces {
   std::vector<std::uint8_t> acted;
 };
 
+// `loop` as for the fluid's pass (gsph_fluid_rates.h, PairLoop): Auto takes the contact's
+// eight- or four-lane loop (coupling/contact_pair_lanes.h) for the Wendland kernel where the CPU
+// has it, Scalar the scalar loop; all give the same bits.
 void add_contact_to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList& fc,
                           const Kernel& kernel, const ContactParams& prm, const Executor& exec,
-                          RatePass pass = RatePass::Both, ContactPairForces* keep = nullptr);
+                          RatePass pass = RatePass::Both, ContactPairForces* keep = nullptr,
+                          PairLoop loop = PairLoop::Auto);
 
 // With `kept` and `cf_in_fc` the forces kept by add_contact_to_fluid for the same state.
 void compute_contact_reaction(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
