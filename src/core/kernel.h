@@ -9,6 +9,10 @@ namespace slamsph {
 
 enum class KernelType { WendlandC2, CubicSpline };
 
+// The regulariser of the Morris et al. (1997) viscous pair term, r^2 / (r^2 + eta^2) with
+// eta^2 = kMorrisEta2 h^2: one value for the water's pass, the contact and their lane loops.
+constexpr double kMorrisEta2 = 0.01;
+
 class Kernel {
  public:
   Kernel() = default;

@@ -94,7 +94,7 @@ inline ContactPairResult contact_pair(const ContactPairInput& in, const Kernel& 
               contact_barrier_force(dx, r, in.Vi, in.Vs, p_barrier);
   out.drho_term = in.Vs * (L.u - u_star) * (-dwr * r);
   if constexpr (kViscous) {
-    const double eta2 = 0.01 * kernel.h() * kernel.h();
+    const double eta2 = kMorrisEta2 * kernel.h() * kernel.h();
     // Morris et al. 1997 with mu = rho nu on both sides and the mirrored solid velocity.
     const double coef = in.Vi * in.Vs * viscosity * (in.rhoi + in.rhos) * dwr * r2 / (r2 + eta2);
     out.force_viscous = coef * (in.vi - in.vs_noslip);

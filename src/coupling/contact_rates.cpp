@@ -94,7 +94,7 @@ void to_fluid(FluidParticles& f, const ContactParticles& c, const NeighbourList&
                           kernel.inv_h(),
                           kernel.wendland_dw_over_r_factor(),
                           kernel.support() * kernel.support(),
-                          0.01 * kernel.h() * kernel.h(),  // as contact_pair's eta2
+                          kMorrisEta2 * kernel.h() * kernel.h(),
                           prm.c0,
                           prm.omega,
                           prm.viscosity,

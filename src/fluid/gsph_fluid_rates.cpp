@@ -109,7 +109,7 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
                        kernel_in.inv_h(),
                        kernel_in.wendland_dw_over_r_factor(),
                        kernel_in.support() * kernel_in.support(),
-                       0.01 * kernel_in.h() * kernel_in.h(),  // Morris regulariser
+                       kMorrisEta2 * kernel_in.h() * kernel_in.h(),
                        prm.c0,
                        1.0 / prm.c0,
                        prm.omega,
