@@ -117,7 +117,7 @@ bool FsiStepper::bodies_beside_fluid_pass() const {
     if (exec_.threads_for(b.size(), kSubstepParticlesPerThread) > 1) return false;
     elastic = true;
   }
-  return elastic && lists_->fluid_within_skin(sys_.fluid, exec_);
+  return elastic;
 }
 
 bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
@@ -131,9 +131,13 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
   };
   const bool eligible = bodies_beside_fluid_pass();
   BesideChoice& choice = beside_choice_[static_cast<std::size_t>(next)];
-  const bool beside = eligible && (beside_schedule_ == BesideSchedule::Measured
-                                       ? choice.beside()
-                                       : beside_schedule_ == BesideSchedule::Always);
+  // Beside only on lists that will hold for the water (its displacement is checked only then,
+  // not in every eligible advance).
+  const bool beside =
+      eligible &&
+      (beside_schedule_ == BesideSchedule::Measured ? choice.beside()
+                                                    : beside_schedule_ == BesideSchedule::Always) &&
+      lists_->fluid_within_skin(sys_.fluid, exec_);
   beside_advances_ += beside;
   const auto start = std::chrono::steady_clock::now();
   if (beside)

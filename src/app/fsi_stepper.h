@@ -177,7 +177,8 @@ class FsiStepper {
   void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
   // Step 4 of the rate evaluation: the water–water GSPH pass.
   void fluid_pass(RatePass pass);
-  // Whether advance_bodies() runs the water's pass beside the bodies (header comment).
+  // Whether advance_bodies() may run the water's pass beside the bodies (header comment):
+  // two threads, water, and sub-cycled elastic bodies all on one-thread teams.
   bool bodies_beside_fluid_pass() const;
   // Advances every body over [t, t + dt] holding its fluid force (the step, or a half of the
   // symplectic step), with the sub-step averages of that interval, and checks the bodies;
