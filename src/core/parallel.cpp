@@ -6,6 +6,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 #include <cstdlib>
@@ -237,6 +238,43 @@ int Executor::team_now(int t) const {
   if (load_ == Load::Fixed) return t;
   if (now < t) reduced_.fetch_add(1, std::memory_order_relaxed);
   return now;
+}
+
+Executor::LearntShares& Executor::learnt_shares(const void* loop, int t, std::uint64_t u) const {
+  for (LearntShares& s : learnt_)
+    if (s.loop == loop && s.t == t && s.pair_units == u) return s;
+  LearntShares s;
+  s.loop = loop;
+  s.t = t;
+  s.pair_units = u;
+  const auto n = static_cast<std::size_t>(t);
+  s.bound.resize(n + 1);
+  for (std::size_t r = 0; r <= n; ++r) s.bound[r] = static_cast<double>(r) / static_cast<double>(t);
+  s.units.assign(n + 1, 0.0);
+  s.seconds.assign(n, 0.0);
+  s.at.assign(n + 1, 0);
+  learnt_.push_back(std::move(s));
+  return learnt_.back();
+}
+
+void Executor::learn_shares(std::vector<double>& bound, const std::vector<double>& units,
+                            const std::vector<double>& seconds) {
+  const std::size_t t = seconds.size();
+  const double total_units = units[t];
+  double total = 0.0;
+  for (const double s : seconds) total += s;
+  if (!(total >= kMinLearnSeconds) || !(total_units > 0.0)) return;
+  // Cumulative cost over the units, linear within each share as it ran.
+  std::size_t r = 0;
+  double before = 0.0;  // the seconds of shares 0 .. r-1
+  for (std::size_t k = 1; k < t; ++k) {
+    const double goal = total * static_cast<double>(k) / static_cast<double>(t);
+    while (r + 1 < t && before + seconds[r] < goal) before += seconds[r++];
+    const double into = seconds[r] > 0.0 ? std::clamp((goal - before) / seconds[r], 0.0, 1.0) : 0.5;
+    const double even = (units[r] + into * (units[r + 1] - units[r])) / total_units;
+    bound[k] += std::clamp(0.5 * (even - bound[k]), -kMaxShareStep, kMaxShareStep);
+  }
+  for (std::size_t k = 1; k < t; ++k) bound[k] = std::clamp(bound[k], bound[k - 1], 1.0);
 }
 
 bool Executor::workers_asleep() const {

@@ -22,6 +22,7 @@
 #pragma once
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -177,9 +178,12 @@ class Executor {
   // tank's bottom wall, the wetted face of a body), where equal counts of items leave one
   // thread with most of the pairs. pair_units is what a pair costs against an item without
   // pairs: with 1 where a pair costs ten times more, the thread that got the wall's
-  // neighbours took 2.5x the other's time (docs/validation.md §6, Threads, Session 15). Each
-  // iteration writes only its own entries, as in for_each, so the result does not depend on
-  // the split.
+  // neighbours took 2.5x the other's time (docs/validation.md §6, Threads, Session 15).
+  // The units are the first guess only: a loop's shares then follow the times its threads
+  // took (learn_shares below), since what an item costs beyond its pairs differs from loop to
+  // loop and along the index range (a body's particles against a tank's, vector lanes against
+  // the scalar path). Each iteration writes only its own entries, as in for_each, so the
+  // result does not depend on the split.
   template <class F>
   void for_each_weighted(std::size_t n, const std::uint32_t* work, F&& f,
                          std::uint32_t pair_units = 1) const {
@@ -188,9 +192,7 @@ class Executor {
       for (std::size_t i = 0; i < n; ++i) f(i);
       return;
     }
-    region(t, [&](int rank) {
-      const std::size_t b = weighted_bound(n, work, pair_units, rank, t);
-      const std::size_t e = weighted_bound(n, work, pair_units, rank + 1, t);
+    weighted_region(loop_key<F>(), n, work, pair_units, t, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) f(i);
     });
   }
@@ -206,11 +208,21 @@ class Executor {
       f(std::size_t{0}, n);
       return;
     }
-    region(t, [&](int rank) {
-      f(weighted_bound(n, work, pair_units, rank, t),
-        weighted_bound(n, work, pair_units, rank + 1, t));
-    });
+    weighted_region(loop_key<F>(), n, work, pair_units, t, f);
   }
+
+  // The shares of one weighted loop, as fractions of its units (0 = bound[0] <= bound[1] <=
+  // ... <= bound[t] = 1), learnt from the seconds each thread took for its share the last
+  // time: the cost is taken as uniform over the units within each share, the bounds are put
+  // where that cost splits evenly, and each bound moves half-way there and by at most
+  // kMaxShareStep of the units per call (a thread preempted once must not throw the split
+  // far). Loops shorter than kMinLearnSeconds in all leave the bounds as they are (their
+  // times are the clock's noise). units[r] is the unit count at the start of share r as it
+  // ran (units[t] the total), seconds[r] its thread's time.
+  static constexpr double kMaxShareStep = 0.05;
+  static constexpr double kMinLearnSeconds = 2e-6;
+  static void learn_shares(std::vector<double>& bound, const std::vector<double>& units,
+                           const std::vector<double>& seconds);
 
   // Chunked variant: f(begin, end) on threads() contiguous ranges (the same ranges whatever
   // the threads that run them).
@@ -342,23 +354,55 @@ class Executor {
     return {n * static_cast<std::size_t>(rank) / static_cast<std::size_t>(t),
             n * static_cast<std::size_t>(rank + 1) / static_cast<std::size_t>(t)};
   }
-  // The first item of rank's share in for_each_weighted: the least i with
-  // u (work[i] - work[0]) + i >= total · rank / t (n for rank == t).
-  static std::size_t weighted_bound(std::size_t n, const std::uint32_t* work, std::uint64_t u,
-                                    int rank, int t) {
-    if (rank >= t) return n;
-    const std::uint64_t total = u * (std::uint64_t{work[n]} - work[0]) + n;
-    const std::uint64_t goal =
-        total * static_cast<std::uint64_t>(rank) / static_cast<std::uint64_t>(t);
-    std::size_t lo = 0, hi = n;  // binary search over the monotone u (work[i] - work[0]) + i
+  // A weighted loop's identity (its body's type): one learnt split per loop.
+  template <class F>
+  static const void* loop_key() {
+    static const char key = 0;
+    return &key;
+  }
+  // The learnt bounds of `loop` on t threads with pair_units u (at r / t on first use).
+  struct LearntShares {
+    const void* loop = nullptr;
+    int t = 0;
+    std::uint64_t pair_units = 0;
+    std::vector<double> bound, units, seconds;
+    std::vector<std::size_t> at;
+  };
+  LearntShares& learnt_shares(const void* loop, int t, std::uint64_t u) const;
+  // The least i with u (work[i] - work[0]) + i >= goal (n if none).
+  static std::size_t unit_bound(std::size_t n, const std::uint32_t* work, std::uint64_t u,
+                                double goal) {
+    std::size_t lo = 0, hi = n;
     while (lo < hi) {
       const std::size_t mid = lo + (hi - lo) / 2;
-      if (u * (std::uint64_t{work[mid]} - work[0]) + mid < goal)
+      if (static_cast<double>(u * (std::uint64_t{work[mid]} - work[0]) + mid) < goal)
         lo = mid + 1;
       else
         hi = mid;
     }
     return lo;
+  }
+  // run(begin, end) on each of t threads, the shares from the loop's learnt bounds; then the
+  // bounds learn from the threads' times.
+  template <class R>
+  void weighted_region(const void* loop, std::size_t n, const std::uint32_t* work, std::uint64_t u,
+                       int t, R&& run) const {
+    LearntShares& s = learnt_shares(loop, t, u);
+    const double total = static_cast<double>(u * (std::uint64_t{work[n]} - work[0]) + n);
+    for (std::size_t k = 0; k <= static_cast<std::size_t>(t); ++k) {
+      s.at[k] = k == 0                             ? 0
+                : k == static_cast<std::size_t>(t) ? n
+                                                   : unit_bound(n, work, u, s.bound[k] * total);
+      s.units[k] = static_cast<double>(u * (std::uint64_t{work[s.at[k]]} - work[0]) + s.at[k]);
+    }
+    region(t, [&](int rank) {
+      const auto k = static_cast<std::size_t>(rank);
+      const auto start = std::chrono::steady_clock::now();
+      run(s.at[k], s.at[k + 1]);
+      s.seconds[k] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
+    learn_shares(s.bound, s.units, s.seconds);
   }
   // job(rank) for rank in [0, t) on t threads, rank 0 on the caller; returns when all are
   // done. An exception thrown by a job is rethrown here (the first one).
@@ -390,6 +434,7 @@ class Executor {
   mutable std::atomic<std::uint64_t> regions_{0};
   mutable std::atomic<std::uint64_t> barriers_{0};
   mutable std::atomic<std::uint64_t> reduced_{0};
+  mutable std::vector<LearntShares> learnt_;  // one per weighted loop (used by the caller only)
 };
 
 }  // namespace slamsph

@@ -98,6 +98,60 @@ TEST(Executor, WeightedLoopsSplitTheWorkNotTheItems) {
   }
 }
 
+// The learnt split of a weighted loop (Executor::learn_shares): each bound moves half-way to
+// where the measured cost splits evenly, by at most kMaxShareStep per call, and converges to
+// the even split of a cost that is not uniform over the units.
+TEST(Executor, WeightedLoopSharesFollowTheMeasuredTimes) {
+  // Two shares of 500 units; the first took 3 s, the second 1 s: the even split lies a third
+  // of the way in (at 333 units), so the bound moves by the largest step, 0.05, to 0.45.
+  std::vector<double> bound{0.0, 0.5, 1.0};
+  Executor::learn_shares(bound, {0.0, 500.0, 1000.0}, {3.0, 1.0});
+  EXPECT_DOUBLE_EQ(bound[1], 0.5 - Executor::kMaxShareStep);
+  // A small difference moves it half-way: 1 s against 0.83 s puts the even split at
+  // 0.5 (1 + 1/1.2) / 2 = 0.458 of the units, so the bound goes to 0.479.
+  bound = {0.0, 0.5, 1.0};
+  Executor::learn_shares(bound, {0.0, 500.0, 1000.0}, {1.0, 1.0 / 1.2});
+  EXPECT_NEAR(bound[1], 0.5 + 0.5 * (0.5 * (1.0 + 1.0 / 1.2) / 2.0 - 0.5), 1e-12);
+  // Times too short to measure leave the bounds alone.
+  bound = {0.0, 0.5, 1.0};
+  Executor::learn_shares(bound, {0.0, 500.0, 1000.0}, {1e-7, 3e-7});
+  EXPECT_EQ(bound[1], 0.5);
+  // Convergence on a cost density of 3 per unit over the first half of the units and 1 over
+  // the second (total 2): every share ends with cost 2 / t (bounds 1/3 for t = 2; 2/9 and 4/9
+  // for t = 3).
+  const auto cost = [](double u) { return u < 0.5 ? 3.0 * u : 1.5 + (u - 0.5); };
+  for (int t : {2, 3}) {
+    std::vector<double> b(static_cast<std::size_t>(t) + 1), units(b.size()), sec(b.size() - 1);
+    for (int r = 0; r <= t; ++r) b[static_cast<std::size_t>(r)] = double(r) / t;
+    for (int it = 0; it < 60; ++it) {
+      for (std::size_t r = 0; r < b.size(); ++r) units[r] = 1000.0 * b[r];
+      for (std::size_t r = 0; r < sec.size(); ++r) sec[r] = cost(b[r + 1]) - cost(b[r]);
+      Executor::learn_shares(b, units, sec);
+    }
+    for (std::size_t r = 0; r < sec.size(); ++r)
+      EXPECT_NEAR(cost(b[r + 1]) - cost(b[r]), 2.0 / t, 1e-3) << "t " << t << " share " << r;
+  }
+}
+
+// A weighted loop visits every item exactly once whatever its learnt split: a loop whose
+// first items cost far more than their units say, run many times on 2 threads.
+TEST(Executor, WeightedLoopVisitsEveryItemOnceWhileItsSplitMoves) {
+  const std::size_t n = 4000;
+  std::vector<std::uint32_t> work(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) work[i + 1] = work[i] + 1;
+  const Executor two(2);
+  std::vector<int> hits(n, 0);
+  volatile double sink = 0.0;
+  for (int call = 0; call < 50; ++call) {
+    two.for_each_weighted(n, work.data(), [&](std::size_t i) {
+      ++hits[i];
+      if (i < n / 4)
+        for (int k = 0; k < 200; ++k) sink = sink + 1e-9 * k;
+    });
+  }
+  for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hits[i], 50) << i;
+}
+
 // Pass k of a team reads what every thread wrote in pass k − 1 (a shifted neighbour outside
 // its own share): wrong as soon as one barrier lets a thread through early.
 void check_team_barriers(int threads) {
