@@ -73,7 +73,8 @@ void csr_lists(std::size_t n, Runs runs, Visit visit, const Executor& exec, Neig
   });
   for (std::size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
   out.index.resize(out.start[n]);
-  exec.for_each(n, [&](std::size_t i) {
+  // Split by list lengths, as above (the fluid–contact lists are empty away from the walls).
+  exec.for_each_weighted(n, out.start.data(), [&](std::size_t i) {
     std::copy_n(out.scratch.data() + part[i], out.start[i + 1] - out.start[i],
                 out.index.data() + out.start[i]);
   });
