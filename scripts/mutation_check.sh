@@ -13,8 +13,8 @@
 # a physics test is named first when one catches it; since session 16 the same for the
 # contact's fluid-side loop in lanes, test_coupling_contact_lanes), then (session 16) the
 # solid law and the fused solid sub-step against the operator sequence, and the threads
-# tests (the water's pass beside small bodies' sub-steps). Only these and slamsph are
-# rebuilt per mutation.
+# tests (the water's pass beside small bodies' sub-steps), and (session 17) the executor's
+# tests (the learnt split of weighted loops). Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,7 +24,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -109,6 +109,11 @@ M = [
   "  S.yy += l;", "  S.yy += 0.0 * l;"),
  ("sub-step: viscous power at the half-step velocity", "src/solid/elastic_substep.cpp",
   "dot2(fav * vi)", "dot2(fav * vhi)"),
+ # Session 17: the fixed walls' virtual state beside the sub-steps; the learnt loop splits.
+ ("beside: fixed entries' virtual state kept across a rebuild", "src/app/fsi_stepper.cpp",
+  "    if (fluid_pass_done && fixed_virtual_beside_) {", "    if (fixed_virtual_beside_) {"),
+ ("learnt split: bounds do not move", "src/core/parallel.cpp",
+  "bound[k] += std::clamp(0.5 * (even - bound[k])", "bound[k] += std::clamp(0.0 * (even - bound[k])"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

@@ -31,9 +31,12 @@
 // longer waits while a small body sub-cycles. Larger bodies keep both
 // threads for their sub-steps (the 2 500-particle skin: the same wall time either way, the
 // sub-steps on one thread outlasting the pass; docs/validation.md §6 "Threads", session 16).
-// A neighbour rebuild in step 2 (which reorders the water) discards that pass and step 4 runs
-// in its place; so the sums, and the results, are those of the serial order on any thread
-// count.
+// Step 3 for the contact entries of rigid_fixed bodies (a tank's walls and their ghosts, most
+// of a tank case's contact set) reads those entries, which stay as first gathered, and the
+// water: it runs beside the sub-steps too, after the water's pass, and step 3 then fills only
+// the moving bodies' entries. A neighbour rebuild in step 2 (which reorders the water) discards
+// both and steps 3 and 4 run in their place; so the sums, and the results, are those of the
+// serial order on any thread count.
 #pragma once
 #include <array>
 #include <memory>
@@ -207,6 +210,10 @@ class FsiStepper {
   long leaked_ = 0;
   // The contact entries of rigid_fixed bodies hold their gathered state (evaluate_rates).
   bool fixed_gathered_ = false;
+  // Per contact entry: 1 if its body is rigid_fixed (the entries step 3 may fill beside the
+  // sub-steps), and whether advance_bodies() did so for the coming evaluation.
+  std::vector<std::uint8_t> fixed_contact_;
+  bool fixed_virtual_beside_ = false;
   std::vector<Vec2> received_;  // per body, see body_fluid_impulse()
   Vec2 zone_momentum_;
   PhaseTimes times_;

@@ -4,6 +4,9 @@
 //   rho'_s = EOS^-1(p'_s),   v~_s = 2 v_s - sum_f v_f W_sf / sum_f W_sf
 // A solid particle without fluid neighbours is marked dry and takes no part.
 #pragma once
+#include <cstdint>
+#include <vector>
+
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/parallel.h"
@@ -13,8 +16,14 @@
 
 namespace slamsph {
 
+// Which contact particles a call fills: all of them, or only those with fixed[s] != 0 (the
+// entries of bodies that never move), or only the others. Each particle's state depends on
+// nothing but its own entries and its fluid neighbours, so a split call gives the same bits.
+enum class VirtualSubset { All, Fixed, Moving };
+
 void compute_virtual_state(ContactParticles& c, const FluidParticles& f, const NeighbourList& cf,
                            const Kernel& kernel, const TaitEos& eos, Vec2 gravity,
-                           const Executor& exec);
+                           const Executor& exec, VirtualSubset subset = VirtualSubset::All,
+                           const std::vector<std::uint8_t>* fixed = nullptr);
 
 }  // namespace slamsph
