@@ -4,8 +4,9 @@
 // output and set-up, as "other"); the cost model (app/cost_model.h) is calibrated from them
 // (bench/calibrate_cost.py).
 //
-// On two threads the water's pair pass may run beside small bodies' sub-steps
-// (app/fsi_stepper.h); its time then counts in solid_substeps, the wall time both took.
+// On two threads the water's pair pass, and the virtual state of the fixed walls' contact
+// entries, may run beside small bodies' sub-steps (app/fsi_stepper.h); their time then
+// counts in solid_substeps, the wall time both took.
 //
 // A handful of clock reads per fluid step (~25 ns each) against steps of 0.1 ms to 1 s:
 // the timing does not measurably change what it times.
