@@ -109,6 +109,9 @@ M = [
   "  S.yy += l;", "  S.yy += 0.0 * l;"),
  ("sub-step: viscous power at the half-step velocity", "src/solid/elastic_substep.cpp",
   "dot2(fav * vi)", "dot2(fav * vhi)"),
+ # Session 17: the two-pass schedule's power rows, one per thread, summed by the threads.
+ ("sub-step: each thread sums the last row only", "src/solid/elastic_substep.cpp",
+  "sum_row(step - t + rank);", "sum_row(step - 1);"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))
