@@ -109,9 +109,12 @@ M = [
   "  S.yy += l;", "  S.yy += 0.0 * l;"),
  ("sub-step: viscous power at the half-step velocity", "src/solid/elastic_substep.cpp",
   "dot2(fav * vi)", "dot2(fav * vhi)"),
- # Session 17: the two-pass schedule's power rows, one per thread, summed by the threads.
- ("sub-step: each thread sums the last row only", "src/solid/elastic_substep.cpp",
-  "sum_row(step - t + rank);", "sum_row(step - 1);"),
+ # Session 17: the two-pass schedule's sums of the powers folded into pass 2, the chain
+ # carried from thread to thread.
+ ("sub-step: the powers' chain not carried to the next thread", "src/solid/elastic_substep.cpp",
+  "rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;", "SubstepPower{0.0, 0.0, 0.0, 0.0};"),
+ ("sub-step: the last thread's last sums left out", "src/solid/elastic_substep.cpp",
+  "for (int r = steps - s; r < t; ++r) {", "for (int r = steps - s; r + 1 < t; ++r) {"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

@@ -106,8 +106,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // the synchronised velocity, external force over the drift. A moving clamp's reaction on its
   // particle is −(f_int + f_ext) (the particle does not accelerate); its power at the clamp's
   // constant velocity is the clamps' work. The per-particle powers come from pass 2
-  // (w.power); summed here serially in particle order, as dot products of the same numbers,
-  // so the sums do not depend on the thread count.
+  // (w.power); summed serially in particle order (add_power, one particle's step), as dot
+  // products of the same numbers, so the sums do not depend on the thread count.
   // `slot`: where particle i's powers are in `power` (the wavefront's rows are in level
   // order), null for i.
   // One particle's step of those sums (the same operations in either schedule).

@@ -341,10 +341,11 @@ TEST(ElasticSubstep, WavefrontBarriersPerBlock) {
   EXPECT_EQ(after.barriers - before.barriers, 5u);
 }
 
-// The two-pass schedule's powers go to one row per thread of the team, each thread summing
-// one row per t sub-steps (elastic_substep.cpp): calls whose sub-step counts are and are not
-// multiples of the team's size (7, 1, 6, 5, 2) on 2 and 3 threads give the bits of 1 thread,
-// energy accumulators included (the clamp's work too).
+// The two-pass schedule's powers go to one row per thread of the team, and each thread adds
+// its share to the particle-order chain of sub-step s − rank inside pass 2, the rest after
+// the region (elastic_substep.cpp): calls whose sub-step counts are and are not multiples of
+// the team's size (7, 1, 6, 5, 2) on 2 and 3 threads give the bits of 1 thread, energy
+// accumulators included (the clamp's work too).
 TEST(ElasticSubstep, TwoPassPowerRowsPerThreadBitIdentical) {
   const SolidBody body = loaded_ring(plate_material(0.5, 1.0));
   const double h = 0.5 * stable_time_step(body);
