@@ -365,7 +365,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       // by thread r − 1 (at pass 2 of s − 1, before the barrier), reading row (s − r) mod t of
       // the powers (t: the team's threads; row s mod t is written at s). What the team has
       // not reached by the last sub-step (thread r's last r sub-steps) is finished after the
-      // region (tail_sums). Until session 16 the leader summed the whole row beside its pass
+      // region. Until session 16 the leader summed the whole row beside its pass
       // 1, reading the other threads' records while they waited at the barrier.
       const auto [b, e] = team.share(n);
       const int rank = team.rank(), t = team.size();
