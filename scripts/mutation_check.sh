@@ -114,6 +114,12 @@ M = [
   "    if (fluid_pass_done && fixed_virtual_beside_) {", "    if (fixed_virtual_beside_) {"),
  ("learnt split: bounds do not move", "src/core/parallel.cpp",
   "bound[k] += std::clamp(0.5 * (even - bound[k])", "bound[k] += std::clamp(0.0 * (even - bound[k])"),
+ # Session 17: the two-pass schedule's sums of the powers folded into pass 2, the chain
+ # carried from thread to thread.
+ ("sub-step: the powers' chain not carried to the next thread", "src/solid/elastic_substep.cpp",
+  "rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;", "SubstepPower{0.0, 0.0, 0.0, 0.0};"),
+ ("sub-step: the last thread's last sums left out", "src/solid/elastic_substep.cpp",
+  "for (int r = steps - s; r < t; ++r) {", "for (int r = steps - s; r + 1 < t; ++r) {"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

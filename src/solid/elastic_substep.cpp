@@ -106,21 +106,25 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // the synchronised velocity, external force over the drift. A moving clamp's reaction on its
   // particle is −(f_int + f_ext) (the particle does not accelerate); its power at the clamp's
   // constant velocity is the clamps' work. The per-particle powers come from pass 2
-  // (w.power); summed here serially in particle order, as dot products of the same numbers,
-  // so the sums do not depend on the thread count.
+  // (w.power); summed serially in particle order (add_power, one particle's step), as dot
+  // products of the same numbers, so the sums do not depend on the thread count.
   // `slot`: where particle i's powers are in `power` (the wavefront's rows are in level
   // order), null for i.
+  // One particle's step of those sums (the same operations in either schedule).
+  auto add_power = [&](SubstepPower & s, const SubstepPower& p, std::size_t i)
+      __attribute__((always_inline)) {
+    s.viscous -= p.viscous;
+    s.hourglass -= p.hourglass;
+    s.external += p.external;
+    if (body.clamped[i]) s.clamp -= p.clamp;
+  };
   auto step_sums = [&](const SubstepPower* power, const std::uint32_t* slot) {
-    double diss = 0.0, hg = 0.0, ext = 0.0, grip = 0.0;
+    SubstepPower s{0.0, 0.0, 0.0, 0.0};
     for (std::size_t i = 0; i < n; ++i) {
       if (slot && i + kPrefetchPowers < n) __builtin_prefetch(&power[slot[i + kPrefetchPowers]]);
-      const SubstepPower& p = power[slot ? slot[i] : i];
-      diss -= p.viscous;
-      hg -= p.hourglass;
-      ext += p.external;
-      if (body.clamped[i]) grip -= p.clamp;
+      add_power(s, power[slot ? slot[i] : i], i);
     }
-    return SubstepPower{diss, hg, ext, grip};
+    return s;
   };
   auto account = [&](const SubstepPower& s) {
     body.dissipated += h * s.viscous;
@@ -146,11 +150,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   // Sub-steps per block of the wavefront schedule, 0 for the two-pass one.
   const int block = kEulerian ? 0 : wavefront_block(body, steps, schedule);
-  if (block > 0) {
-    w.power.resize(n * static_cast<std::size_t>(block));
-    w.step_sums.resize(static_cast<std::size_t>(steps));
-  }
+  // Power rows: one per sub-step of a wavefront block, or, two-pass schedule, one per thread
+  // of the team (see there).
+  w.power.resize(n * static_cast<std::size_t>(block > 0 ? block : threads));
+  w.step_sums.resize(static_cast<std::size_t>(steps));
   bool swapped = false;  // the current positions are in w.x_next
+  int team_size = 1;     // two-pass schedule: the team's threads
   exec.run_team(threads, [&](const Team& team) {
     // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
     // update them in place; the Eulerian pair forces read the neighbours' current x and v½,
@@ -352,8 +357,19 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       }
     };
     if (block == 0) {
-      // Two passes over the team's share per sub-step, a barrier after each.
+      // Two passes over the team's share per sub-step, a barrier after each. The sums of the
+      // powers run in particle order, a serial chain of n adds per sub-step; they are folded
+      // into pass 2's loop, each thread adding its own share's records (in its cache) to the
+      // chain that the thread before it has carried to its share's start: thread r continues
+      // the chain of sub-step s − r during pass 2 of s, from the carry w.step_sums[s − r] left
+      // by thread r − 1 (at pass 2 of s − 1, before the barrier), reading row (s − r) mod t of
+      // the powers (t: the team's threads; row s mod t is written at s). What the team has
+      // not reached by the last sub-step (thread r's last r sub-steps) is finished after the
+      // region. Until session 16 the leader summed the whole row beside its pass
+      // 1, reading the other threads' records while they waited at the barrier.
       const auto [b, e] = team.share(n);
+      const int rank = team.rank(), t = team.size();
+      if (team.leader()) team_size = t;
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
       for (int step = 0; step < steps; ++step) {
@@ -363,11 +379,22 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           team.barrier();
         }
         for (std::size_t i = b; i < e; ++i) pass1(i);
-        if (team.leader() && step > 0)
-          account(step_sums(w.power.data(), nullptr));  // the previous sub-step's
         team.barrier();
         const bool more = step + 1 < steps;
-        for (std::size_t i = b; i < e; ++i) pass2(i, more, w.power[i]);
+        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step % t) * n;
+        const int s = step - rank;  // the sub-step whose chain this thread continues
+        if (s >= 0) {
+          const SubstepPower* const sum_row = w.power.data() + static_cast<std::size_t>(s % t) * n;
+          SubstepPower& carry = w.step_sums[static_cast<std::size_t>(s)];
+          SubstepPower acc = rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;
+          for (std::size_t i = b; i < e; ++i) {
+            pass2(i, more, row[i]);
+            add_power(acc, sum_row[i], i);
+          }
+          carry = acc;
+        } else {
+          for (std::size_t i = b; i < e; ++i) pass2(i, more, row[i]);
+        }
         team.barrier();
         if (eulerian && more) {
           std::swap(x, xn);
@@ -375,7 +402,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           if (team.leader()) swapped = !swapped;
         }
       }
-      if (team.leader() && steps > 0) account(step_sums(w.power.data(), nullptr));
       return;
     }
     // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
@@ -486,8 +512,22 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       if (s1 < steps) team.barrier();  // before the next block overwrites the rows
     }
   });
-  if (block > 0)  // the wavefront's sums of the sub-steps, in order
-    for (int s = 0; s < steps; ++s) account(w.step_sums[static_cast<std::size_t>(s)]);
+  if (block == 0) {
+    // The two-pass schedule's chains the team did not reach: sub-step s, thread r's share
+    // for s + r ≥ steps (row s mod t still holds s's powers), in order of s, then r.
+    const int t = team_size;
+    for (int s = std::max(0, steps - t + 1); s < steps; ++s) {
+      SubstepPower& acc = w.step_sums[static_cast<std::size_t>(s)];
+      const SubstepPower* const row = w.power.data() + static_cast<std::size_t>(s % t) * n;
+      for (int r = steps - s; r < t; ++r) {
+        const std::size_t i0 = n * static_cast<std::size_t>(r) / static_cast<std::size_t>(t);
+        const std::size_t i1 = n * static_cast<std::size_t>(r + 1) / static_cast<std::size_t>(t);
+        for (std::size_t i = i0; i < i1; ++i) add_power(acc, row[i], i);
+      }
+    }
+  }
+  for (int s = 0; s < steps; ++s)  // the sums of the sub-steps, in order
+    account(w.step_sums[static_cast<std::size_t>(s)]);
   if (swapped) std::swap(body.x, w.x_next);
   body.history.updates += static_cast<std::uint64_t>(steps);
 }

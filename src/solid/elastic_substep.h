@@ -37,9 +37,10 @@
 // the pair loops read them without indirection; the loops are instantiated per law, per
 // on/off state of hourglass control and viscosity and per Eulerian state
 // (body.eulerian.active). The energy bookkeeping (dissipated, hourglass and external work)
-// is summed serially in particle order, from the per-particle powers of pass 2, by the
-// team's first thread while the others run pass 1 of the next sub-step, so it too does not
-// depend on the thread count. All of this is bit-identical to the sub-step before these
+// is summed serially in particle order, from the per-particle powers of pass 2: each thread
+// continues, inside its pass 2, the chain that the thread before it carried to its share's
+// start (of an earlier sub-step, one per rank; session 17), so it too does not depend on
+// the thread count. All of this is bit-identical to the sub-step before these
 // storage changes (docs/validation.md, "Solid sub-step").
 // Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
 // for large bodies without an Eulerian switch a wavefront over the pair graph's levels

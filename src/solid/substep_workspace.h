@@ -42,9 +42,9 @@ struct SubstepParticleMats {
 };
 
 // Per particle, the powers of the energy bookkeeping of one sub-step, written in pass 2 and
-// summed in particle order by the team's first thread during the next pass 1 (the forces and
-// velocities they come from are overwritten meanwhile) [W/m]: f_av·v, f_hg·v, f_ext·v½ and
-// for a clamped particle (f_int + f_ext)·v_clamp.
+// summed in particle order later (the forces and velocities they come from are overwritten
+// meanwhile) [W/m]: f_av·v, f_hg·v, f_ext·v½ and for a clamped particle
+// (f_int + f_ext)·v_clamp.
 struct SubstepPower {
   double viscous, hourglass, external, clamp;
 };
@@ -63,12 +63,14 @@ struct SubstepWorkspace {
   std::vector<Vec2> gsum;                 // Σ_j g_ij over i's pairs, per call [1/m]
   std::vector<SubstepParticleMats> mats;  // V0 P and G by columns
   std::vector<Vec2> fext;                 // fluid force + weight, held over the call [N/m]
-  // Of the sub-step just completed (two-pass schedule) or, wavefront schedule, one row of n
-  // per sub-step of the block.
+  // One row of n per thread of the team (two-pass schedule: sub-step s in row s mod t, summed
+  // by thread r during pass 2 of s + r) or per sub-step of the block (wavefront schedule).
   std::vector<SubstepPower> power;
-  std::vector<SubstepPower> step_sums;  // wavefront: the sums of each sub-step's powers
-  SubstepLevels levels;                 // wavefront: the pair graph's levels
-  std::vector<Vec2> vhalf;              // half-step velocity
+  // The sums of each sub-step's powers (two-pass schedule: the chain carried from thread to
+  // thread until the last one's share is added).
+  std::vector<SubstepPower> step_sums;
+  SubstepLevels levels;     // wavefront: the pair graph's levels
+  std::vector<Vec2> vhalf;  // half-step velocity
   // With an Eulerian switch only (otherwise updated in place): v½ and x after the next kick
   // and drift, swapped with vhalf and body.x after pass 2.
   std::vector<Vec2> vhalf_next;

@@ -340,3 +340,28 @@ TEST(ElasticSubstep, WavefrontBarriersPerBlock) {
   EXPECT_EQ(after.regions - before.regions, 1u);
   EXPECT_EQ(after.barriers - before.barriers, 5u);
 }
+
+// The two-pass schedule's powers go to one row per thread of the team, and each thread adds
+// its share to the particle-order chain of sub-step s − rank inside pass 2, the rest after
+// the region (elastic_substep.cpp): calls whose sub-step counts are and are not multiples of
+// the team's size (7, 1, 6, 5, 2) on 2 and 3 threads give the bits of 1 thread, energy
+// accumulators included (the clamp's work too).
+TEST(ElasticSubstep, TwoPassPowerRowsPerThreadBitIdentical) {
+  const SolidBody body = loaded_ring(plate_material(0.5, 1.0));
+  const double h = 0.5 * stable_time_step(body);
+  const int calls[] = {7, 1, 6, 5, 2};
+  SolidBody ref = body;
+  for (int steps : calls)
+    run_elastic_substeps(ref, steps, h, {0.0, -9.81}, Executor(1), SubstepSchedule::TwoPass);
+  expect_moved(ref);
+  EXPECT_NE(ref.clamp_work, 0.0);
+  for (int threads = 2; threads <= 3; ++threads) {
+    const Executor exec(threads);
+    ASSERT_EQ(exec.threads_for(body.size(), kSubstepParticlesPerThread), threads);
+    SolidBody b = body;
+    for (int steps : calls)
+      run_elastic_substeps(b, steps, h, {0.0, -9.81}, exec, SubstepSchedule::TwoPass);
+    SCOPED_TRACE(threads);
+    expect_identical(b, ref);
+  }
+}
