@@ -3,6 +3,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -162,13 +163,30 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
 
 namespace {
 
-// The state check's test of fluid particle i (FsiStepper::check_state): not finite, or
-// outside the domain.
-bool bad_fluid(const FluidParticles& fluid, const Box& d, std::size_t i) {
-  const Vec2 x = fluid.x[i];
-  const bool finite = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(fluid.v[i].x) &&
-                      std::isfinite(fluid.v[i].y) && std::isfinite(fluid.rho[i]);
-  return !finite || x.x < d.min.x || x.x > d.max.x || x.y < d.min.y || x.y > d.max.y;
+// The state check's test of fluid particle i (FsiStepper::check_state): x, v or rho not
+// finite, or x outside the domain. Without branches (|q| <= max is false for NaN and ±inf,
+// as std::isfinite; the domain's comparisons as written), so that it costs the integrator's
+// last sweep no more than its loads.
+inline bool bad_fluid(Vec2 x, Vec2 v, double rho, const Box& d) {
+  constexpr double big = std::numeric_limits<double>::max();
+  const bool finite = (std::abs(x.x) <= big) & (std::abs(x.y) <= big) & (std::abs(v.x) <= big) &
+                      (std::abs(v.y) <= big) & (std::abs(rho) <= big);
+  const bool outside = (x.x < d.min.x) | (x.x > d.max.x) | (x.y < d.min.y) | (x.y > d.max.y);
+  return !finite | outside;
+}
+
+// The water's arrays as raw pointers, for the integrator's sweeps to capture by value (with
+// a copy of the equation of state): in Executor::maxima_of's copy of the sweep they stay in
+// registers, where through the vectors (and a referenced TaitEos, whose doubles a store to
+// rho or p may alias) they were loaded again, and stiffness() divided again, per particle.
+// The same operations on the same values: the same bits.
+struct FluidView {
+  Vec2 *x, *v, *a, *v_half;
+  double *rho, *drho, *rho_half, *p;
+};
+FluidView view(FluidParticles& f) {
+  return {f.x.data(),   f.v.data(),    f.a.data(),        f.v_half.data(),
+          f.rho.data(), f.drho.data(), f.rho_half.data(), f.p.data()};
 }
 
 }  // namespace
@@ -184,12 +202,14 @@ double FsiStepper::last_sweep(Update&& update) {
     exec_.for_each(f.size(), update, Executor::kMinParallelCheap);
     return -1.0;
   }
-  const Box& d = prm_.domain;
+  const Box d = prm_.domain;
+  const FluidView w = view(f);
   const std::array<double, 3> m = exec_.maxima_of<3>(
       f.size(),
-      [&](std::size_t i) {
+      [=](std::size_t i) {
         update(i);
-        return std::array<double, 3>{norm2(f.v[i]), norm2(f.a[i]), bad_fluid(f, d, i) ? 1.0 : 0.0};
+        return std::array<double, 3>{norm2(w.v[i]), norm2(w.a[i]),
+                                     bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
       },
       0.0, Executor::kMinParallelCheap);
   found_.maxima = true;
@@ -209,11 +229,13 @@ void FsiStepper::drift_sweep(Update&& update) {
     found_.fluid_d2 = -1.0;
     return;
   }
+  const Vec2* const x0 = ref.data();
+  const Vec2* const x = f.x.data();
   found_.fluid_d2 = exec_.maxima_of<1>(
       f.size(),
-      [&](std::size_t i) {
+      [=](std::size_t i) {
         update(i);
-        return std::array<double, 1>{norm2(f.x[i] - ref[i])};
+        return std::array<double, 1>{norm2(x[i] - x0[i])};
       },
       0.0, Executor::kMinParallelCheap)[0];
 }
@@ -251,15 +273,16 @@ void FsiStepper::step() {
     step_symplectic(dt, clock, t);
     return;
   }
-  const TaitEos& eos = sys_.eos;
+  const TaitEos eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  drift_sweep([&](std::size_t i) {
-    f.v_half[i] = f.v[i] + hdt * f.a[i];
-    f.rho_half[i] = f.rho[i] + hdt * f.drho[i];
-    f.x[i] += dt * f.v_half[i];
-    f.v[i] = f.v_half[i] + hdt * f.a[i];  // predicted, for the velocity-dependent rates
-    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
+  FluidView w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.v_half[i] = w.v[i] + hdt * w.a[i];
+    w.rho_half[i] = w.rho[i] + hdt * w.drho[i];
+    w.x[i] += dt * w.v_half[i];
+    w.v[i] = w.v_half[i] + hdt * w.a[i];  // predicted, for the velocity-dependent rates
+    w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
   });
   clock.lap(t.fluid_integration);
   const bool fluid_done = advance_bodies(time_, dt, RatePass::Both);
@@ -269,10 +292,11 @@ void FsiStepper::step() {
   dual_.correct(sys_.bodies, dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  const double bad = last_sweep([&](std::size_t i) {
-    f.v[i] = f.v_half[i] + hdt * f.a[i];
-    f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
+  w = view(f);  // a neighbour rebuild permutes the arrays
+  const double bad = last_sweep([=](std::size_t i) {
+    w.v[i] = w.v_half[i] + hdt * w.a[i];
+    w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
   });
   clock.lap(t.fluid_integration);
   end_step(dt, clock, t, bad);
@@ -304,12 +328,13 @@ void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t, double fl
 // the continuity pass at t_n+1.
 void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& f = sys_.fluid;
-  const TaitEos& eos = sys_.eos;
+  const TaitEos eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  drift_sweep([&](std::size_t i) {
-    f.rho[i] += hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
-    f.x[i] += hdt * f.v[i];
+  FluidView w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.rho[i] += hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
+    w.x[i] += hdt * w.v[i];
   });
   clock.lap(t.fluid_integration);
   bool fluid_done = advance_bodies(time_, hdt, RatePass::Momentum);
@@ -318,9 +343,10 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   dual_.correct(sys_.bodies, dt);  // dt/2 (F_n+1/2 - F_n-1/2): the first half's correction
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  drift_sweep([&](std::size_t i) {
-    f.v[i] += dt * f.a[i];
-    f.x[i] += hdt * f.v[i];
+  w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.v[i] += dt * w.a[i];
+    w.x[i] += hdt * w.v[i];
   });
   clock.lap(t.fluid_integration);
   fluid_done = advance_bodies(time_ + hdt, hdt, RatePass::Continuity);
@@ -328,9 +354,10 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   time_ += dt;
   clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Continuity, fluid_done);
-  const double bad = last_sweep([&](std::size_t i) {
-    f.rho[i] += hdt * f.drho[i];
-    f.p[i] = eos.pressure(f.rho[i]);
+  w = view(f);  // a neighbour rebuild permutes the arrays
+  const double bad = last_sweep([=](std::size_t i) {
+    w.rho[i] += hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
   });
   clock.lap(t.fluid_integration);
   end_step(dt, clock, t, bad);
@@ -344,11 +371,14 @@ void FsiStepper::check_state(double fluid_bad) const {
       fluid_bad >= 0.0
           ? fluid_bad
           : exec_.max_of(
-                fluid.size(), [&](std::size_t i) { return bad_fluid(fluid, d, i) ? 1.0 : 0.0; },
+                fluid.size(),
+                [&](std::size_t i) {
+                  return bad_fluid(fluid.x[i], fluid.v[i], fluid.rho[i], d) ? 1.0 : 0.0;
+                },
                 0.0, Executor::kMinParallelCheap);
   if (any > 0.0) {
     for (std::size_t i = 0; i < fluid.size(); ++i) {
-      if (!bad_fluid(fluid, d, i)) continue;
+      if (!bad_fluid(fluid.x[i], fluid.v[i], fluid.rho[i], d)) continue;
       std::ostringstream os;
       const Vec2 x = fluid.x[i];
       const bool finite = std::isfinite(x.x) && std::isfinite(x.y);

@@ -285,15 +285,19 @@ class Executor {
   // exact as max_of's (the same comparison, init for n == 0, NaN never taken). g(i) may also
   // write item i's own entries: a per-particle sweep that reduces what the next operator
   // would otherwise read again (app/fsi_stepper.cpp, the step limit and the state check in
-  // the integrator's last sweep). Each thread takes the same contiguous share as for_each.
+  // the integrator's last sweep). Each thread takes the same contiguous share as for_each,
+  // and calls its own copy of g.
   template <std::size_t N, class G>
   std::array<double, N> maxima_of(std::size_t n, G&& g, double init,
                                   std::size_t min_items = kMinParallel) const {
     auto max_range = [&](std::size_t b, std::size_t e) {
+      // A copy per share: what g captures by value (pointers, constants) stays in registers
+      // instead of being loaded again after each of g's stores.
+      std::decay_t<G> item(g);
       std::array<double, N> m;
       m.fill(init);
       for (std::size_t i = b; i < e; ++i) {
-        const std::array<double, N> v = g(i);
+        const std::array<double, N> v = item(i);
         for (std::size_t k = 0; k < N; ++k)
           if (v[k] > m[k]) m[k] = v[k];
       }
