@@ -5,8 +5,11 @@
 // (choose_time_step without the maxima found), bit for bit, on 1 and 2 threads, for both
 // integrators; and a run whose particles were changed from outside between two steps (here
 // through Simulation::fluid()) must not use what the last sweep found before the change.
-// Broken on purpose: the maxima taken from v_half instead of the new v
-// (scripts/mutation_check.sh "fused sweeps") fails StepLimitIsTheSeparateSweeps.
+// Broken on purpose (scripts/mutation_check.sh "fused sweeps"): the maxima taken from v_half
+// instead of the new v fails StepLimitIsTheSeparateSweeps (Δt 5.18652e-05 against
+// 5.18465e-05 at the first step); the drift's displacement taken as zero fails
+// ListsHoldAfterEveryStep (t = 0.021 s); the state test dropped from the last sweep fails
+// Divergence.FluidLeavingTheDomainExitsThreeAndKeepsOutputs (tests/regression).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -53,8 +56,8 @@ TEST(FusedSweeps, StepLimitIsTheSeparateSweeps) {
         sim.step();
         const StepLimit& got = sim.stepper().last_step_limit();
         ASSERT_TRUE(limited_by_fluid(got.limiter));
-        ASSERT_EQ(got.dt, want.dt) << "step " << k << (symplectic ? " symplectic" : " kdk")
-                                   << ", " << threads << " threads";
+        ASSERT_EQ(got.dt, want.dt) << "step " << k << (symplectic ? " symplectic" : " kdk") << ", "
+                                   << threads << " threads";
         ASSERT_EQ(got.limiter, want.limiter) << k;
       }
     }
@@ -70,4 +73,24 @@ TEST(FusedSweeps, ParticlesChangedBetweenStepsAreSweptAgain) {
   const StepLimit want = separate(sim, Executor(1));
   sim.step();
   EXPECT_EQ(sim.stepper().last_step_limit().dt, want.dt);
+}
+
+// The lists' displacement check uses the maximum the drift sweep found: after every step the
+// lists still hold for the water's positions (no particle has moved half the skin since the
+// last build), on both integrators, through rebuilds. Broken on purpose: that maximum taken
+// as zero (scripts/mutation_check.sh "fused sweeps") fails here at the first step past half
+// the skin.
+TEST(FusedSweeps, ListsHoldAfterEveryStep) {
+  for (const bool symplectic : {false, true}) {
+    CaseConfig cfg = peer(symplectic);
+    rescale_resolution(cfg, 0.025);  // 3 200 particles: 0.15 s in a few hundred steps
+    Simulation sim(cfg, silent_options(2));
+    const Executor exec(1);
+    while (sim.time() < 0.15) {
+      sim.step();
+      ASSERT_TRUE(sim.stepper().lists().fluid_within_skin(std::as_const(sim).fluid(), exec))
+          << "t = " << sim.time() << (symplectic ? " symplectic" : " kdk");
+    }
+    EXPECT_GT(sim.stepper().lists().rebuilds(), 2) << symplectic;
+  }
 }
