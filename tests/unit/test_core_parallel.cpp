@@ -84,7 +84,11 @@ TEST(Executor, MaximaOfIsMaxOfForEachComponent) {
     EXPECT_EQ(m, ref) << threads;
     for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hits[i], 1) << i;
     EXPECT_EQ(exec.maxima_of<2>(
-                  0, [](std::size_t) { return std::array<double, 2>{1.0, 2.0}; }, -5.0),
+                  0,
+                  [](std::size_t) {
+                    return std::array<double, 2>{1.0, 2.0};
+                  },
+                  -5.0),
               (std::array<double, 2>{-5.0, -5.0}));
   }
 }
