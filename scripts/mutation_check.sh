@@ -14,7 +14,8 @@
 # contact's fluid-side loop in lanes, test_coupling_contact_lanes), then (session 16) the
 # solid law and the fused solid sub-step against the operator sequence, and the threads
 # tests (the water's pass beside small bodies' sub-steps), and (session 17) the executor's
-# tests (the learnt split of weighted loops). Only these and slamsph are rebuilt per mutation.
+# tests (the learnt split of weighted loops), the step limit found in the integrator's last
+# sweep and the diverging runs' messages. Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,7 +25,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -120,6 +121,14 @@ M = [
   "rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;", "SubstepPower{0.0, 0.0, 0.0, 0.0};"),
  ("sub-step: the last thread's last sums left out", "src/solid/elastic_substep.cpp",
   "for (int r = steps - s; r < t; ++r) {", "for (int r = steps - s; r + 1 < t; ++r) {"),
+ # Session 17: the step limit, the state check and the lists' displacement in the
+ # integrator's sweeps (app/fsi_stepper.cpp last_sweep / drift_sweep).
+ ("fused sweeps: step limit from v_half, not the new v", "src/app/fsi_stepper.cpp",
+  "norm2(w.v[i]), norm2(w.a[i])", "norm2(w.v_half[i]), norm2(w.a[i])"),
+ ("fused sweeps: state check dropped from the last sweep", "src/app/fsi_stepper.cpp",
+  "bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0", "0.0 * (bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0)"),
+ ("fused sweeps: the drift's displacement taken as zero", "src/app/fsi_stepper.cpp",
+  "return std::array<double, 1>{norm2(x[i] - x0[i])};", "return std::array<double, 1>{0.0 * norm2(x[i] - x0[i])};"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

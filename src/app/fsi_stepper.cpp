@@ -1,7 +1,9 @@
 #include "app/fsi_stepper.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -57,7 +59,9 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
   clock.lap(t.contact);
   // A rebuild reorders the fluid and its pairs: a water pass done beside the bodies' sub-steps
   // on the old lists is done again (its sums would come in another order).
-  if (lists_->update(fluid, contact, exec_, replanned) && fluid_pass_done) {
+  const bool rebuilt = lists_->update(fluid, contact, exec_, replanned, found_.fluid_d2);
+  found_.fluid_d2 = -1.0;  // for these positions and these lists only
+  if (rebuilt && fluid_pass_done) {
     fluid_pass_done = false;
     ++beside_redone_;
   }
@@ -160,7 +164,7 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
       eligible &&
       (beside_schedule_ == BesideSchedule::Measured ? choice.beside()
                                                     : beside_schedule_ == BesideSchedule::Always) &&
-      lists_->fluid_within_skin(sys_.fluid, exec_);
+      lists_->fluid_within_skin(sys_.fluid, exec_, found_.fluid_d2);
   beside_advances_ += beside;
   const auto start = std::chrono::steady_clock::now();
   // The fixed entries' virtual state beside as well, once they are gathered (header comment).
@@ -189,13 +193,94 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
   return beside;
 }
 
+namespace {
+
+// The state check's test of fluid particle i (FsiStepper::check_state): x, v or rho not
+// finite, or x outside the domain. Without branches (|q| <= max is false for NaN and ±inf,
+// as std::isfinite; the domain's comparisons as written), so that it costs the integrator's
+// last sweep no more than its loads.
+inline bool bad_fluid(Vec2 x, Vec2 v, double rho, const Box& d) {
+  constexpr double big = std::numeric_limits<double>::max();
+  const bool finite = (std::abs(x.x) <= big) & (std::abs(x.y) <= big) & (std::abs(v.x) <= big) &
+                      (std::abs(v.y) <= big) & (std::abs(rho) <= big);
+  const bool outside = (x.x < d.min.x) | (x.x > d.max.x) | (x.y < d.min.y) | (x.y > d.max.y);
+  return !finite | outside;
+}
+
+// The water's arrays as raw pointers, for the integrator's sweeps to capture by value (with
+// a copy of the equation of state): in Executor::maxima_of's copy of the sweep they stay in
+// registers, where through the vectors (and a referenced TaitEos, whose doubles a store to
+// rho or p may alias) they were loaded again, and stiffness() divided again, per particle.
+// The same operations on the same values: the same bits.
+struct FluidView {
+  Vec2 *x, *v, *a, *v_half;
+  double *rho, *drho, *rho_half, *p;
+};
+FluidView view(FluidParticles& f) {
+  return {f.x.data(),   f.v.data(),    f.a.data(),        f.v_half.data(),
+          f.rho.data(), f.drho.data(), f.rho_half.data(), f.p.data()};
+}
+
+}  // namespace
+
+// Each particle's own operations run as in a sweep of their own (the same bits); the two
+// operators folded in only read what `update` has just written, and the next step's limit
+// reads v and a, which nothing writes between this sweep and the next step() when the
+// absorbing zone is off (end_step; the recorder and the checkpoints only read).
+template <class Update>
+double FsiStepper::last_sweep(Update&& update) {
+  FluidParticles& f = sys_.fluid;
+  if (prm_.absorbing_zone.active()) {  // it changes v and rho after this sweep
+    exec_.for_each(f.size(), update, Executor::kMinParallelCheap);
+    return -1.0;
+  }
+  const Box d = prm_.domain;
+  const FluidView w = view(f);
+  const std::array<double, 3> m = exec_.maxima_of<3>(
+      f.size(),
+      [=](std::size_t i) {
+        update(i);
+        return std::array<double, 3>{norm2(w.v[i]), norm2(w.a[i]),
+                                     bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
+      },
+      0.0, Executor::kMinParallelCheap);
+  found_.maxima = true;
+  found_.next_maxima = {m[0], m[1]};
+  return m[2];
+}
+
+// The lists' displacement check (InteractionLists::update) reads x and the positions of the
+// last build: here x is in a register already. No rebuild can come between this sweep and
+// the evaluation that uses it (the bodies' advance does not move the water).
+template <class Update>
+void FsiStepper::drift_sweep(Update&& update) {
+  FluidParticles& f = sys_.fluid;
+  const std::vector<Vec2>& ref = lists_->fluid_reference();
+  if (ref.size() != f.size()) {
+    exec_.for_each(f.size(), update, Executor::kMinParallelCheap);
+    found_.fluid_d2 = -1.0;
+    return;
+  }
+  const Vec2* const x0 = ref.data();
+  const Vec2* const x = f.x.data();
+  found_.fluid_d2 = exec_.maxima_of<1>(
+      f.size(),
+      [=](std::size_t i) {
+        update(i);
+        return std::array<double, 1>{norm2(x[i] - x0[i])};
+      },
+      0.0, Executor::kMinParallelCheap)[0];
+}
+
 void FsiStepper::step() {
   FluidParticles& f = sys_.fluid;
   PhaseTimes& t = times_;
   PhaseClock clock;
   const StepLimitParams sp{prm_.cfl, prm_.acceleration_cfl, sys_.eos.c0, prm_.end_time,
                            dual_.bodies_share_step(f.size())};
-  limit_ = choose_time_step(f, sys_.bodies, sys_.kernel_f, sp, exec_);
+  limit_ = choose_time_step(f, sys_.bodies, sys_.kernel_f, sp, exec_,
+                            found_.maxima ? &found_.next_maxima : nullptr);
+  found_.maxima = false;
   ++limiter_steps_[static_cast<std::size_t>(limit_.limiter)];
   clock.lap(t.step_limit);
   const double dt = limit_.dt;
@@ -220,19 +305,17 @@ void FsiStepper::step() {
     step_symplectic(dt, clock, t);
     return;
   }
-  const TaitEos& eos = sys_.eos;
+  const TaitEos eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  exec_.for_each(
-      f.size(),
-      [&](std::size_t i) {
-        f.v_half[i] = f.v[i] + hdt * f.a[i];
-        f.rho_half[i] = f.rho[i] + hdt * f.drho[i];
-        f.x[i] += dt * f.v_half[i];
-        f.v[i] = f.v_half[i] + hdt * f.a[i];  // predicted, for the velocity-dependent rates
-        f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-        f.p[i] = eos.pressure(f.rho[i]);
-      },
-      Executor::kMinParallelCheap);
+  FluidView w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.v_half[i] = w.v[i] + hdt * w.a[i];
+    w.rho_half[i] = w.rho[i] + hdt * w.drho[i];
+    w.x[i] += dt * w.v_half[i];
+    w.v[i] = w.v_half[i] + hdt * w.a[i];  // predicted, for the velocity-dependent rates
+    w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
+  });
   clock.lap(t.fluid_integration);
   const bool fluid_done = advance_bodies(time_, dt, RatePass::Both);
   time_ += dt;
@@ -241,23 +324,21 @@ void FsiStepper::step() {
   dual_.correct(sys_.bodies, dt);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  exec_.for_each(
-      f.size(),
-      [&](std::size_t i) {
-        f.v[i] = f.v_half[i] + hdt * f.a[i];
-        f.rho[i] = f.rho_half[i] + hdt * f.drho[i];
-        f.p[i] = eos.pressure(f.rho[i]);
-      },
-      Executor::kMinParallelCheap);
+  w = view(f);  // a neighbour rebuild permutes the arrays
+  const double bad = last_sweep([=](std::size_t i) {
+    w.v[i] = w.v_half[i] + hdt * w.a[i];
+    w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
+  });
   clock.lap(t.fluid_integration);
-  end_step(dt, clock, t);
+  end_step(dt, clock, t, bad);
 }
 
-void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t) {
+void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t, double fluid_bad) {
   // Acoustic damping near the chosen tank walls, over the whole step (absorbing_zone.h).
   zone_momentum_ += apply_absorbing_zone(sys_.fluid, prm_.absorbing_zone, sys_.eos, dt, exec_);
   ++steps_;
-  check_state();
+  check_state(fluid_bad);
   clock.lap(t.checks_and_zone);
 }
 
@@ -279,16 +360,14 @@ void FsiStepper::end_step(double dt, PhaseClock& clock, PhaseTimes& t) {
 // the continuity pass at t_n+1.
 void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   FluidParticles& f = sys_.fluid;
-  const TaitEos& eos = sys_.eos;
+  const TaitEos eos = sys_.eos;
   const double hdt = 0.5 * dt;
-  exec_.for_each(
-      f.size(),
-      [&](std::size_t i) {
-        f.rho[i] += hdt * f.drho[i];
-        f.p[i] = eos.pressure(f.rho[i]);
-        f.x[i] += hdt * f.v[i];
-      },
-      Executor::kMinParallelCheap);
+  FluidView w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.rho[i] += hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
+    w.x[i] += hdt * w.v[i];
+  });
   clock.lap(t.fluid_integration);
   bool fluid_done = advance_bodies(time_, hdt, RatePass::Momentum);
   clock.lap(t.solid_substeps);
@@ -296,45 +375,42 @@ void FsiStepper::step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t) {
   dual_.correct(sys_.bodies, dt);  // dt/2 (F_n+1/2 - F_n-1/2): the first half's correction
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   clock.lap(t.solid_substeps);
-  exec_.for_each(
-      f.size(),
-      [&](std::size_t i) {
-        f.v[i] += dt * f.a[i];
-        f.x[i] += hdt * f.v[i];
-      },
-      Executor::kMinParallelCheap);
+  w = view(f);
+  drift_sweep([=](std::size_t i) {
+    w.v[i] += dt * w.a[i];
+    w.x[i] += hdt * w.v[i];
+  });
   clock.lap(t.fluid_integration);
   fluid_done = advance_bodies(time_ + hdt, hdt, RatePass::Continuity);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
   time_ += dt;
   clock.lap(t.solid_substeps);
   evaluate_rates(clock, t, RatePass::Continuity, fluid_done);
-  exec_.for_each(
-      f.size(),
-      [&](std::size_t i) {
-        f.rho[i] += hdt * f.drho[i];
-        f.p[i] = eos.pressure(f.rho[i]);
-      },
-      Executor::kMinParallelCheap);
+  w = view(f);  // a neighbour rebuild permutes the arrays
+  const double bad = last_sweep([=](std::size_t i) {
+    w.rho[i] += hdt * w.drho[i];
+    w.p[i] = eos.pressure(w.rho[i]);
+  });
   clock.lap(t.fluid_integration);
-  end_step(dt, clock, t);
+  end_step(dt, clock, t, bad);
 }
 
-void FsiStepper::check_state() const {
+void FsiStepper::check_state(double fluid_bad) const {
   const FluidParticles& fluid = sys_.fluid;
   const Box& d = prm_.domain;
-  auto bad_fluid = [&](std::size_t i) {
-    const Vec2 x = fluid.x[i];
-    const bool finite = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(fluid.v[i].x) &&
-                        std::isfinite(fluid.v[i].y) && std::isfinite(fluid.rho[i]);
-    return !finite || x.x < d.min.x || x.x > d.max.x || x.y < d.min.y || x.y > d.max.y;
-  };
-  const double any = exec_.max_of(
-      fluid.size(), [&](std::size_t i) { return bad_fluid(i) ? 1.0 : 0.0; }, 0.0,
-      Executor::kMinParallelCheap);
+  // The first bad particle in index order names the divergence, whoever found that one is bad.
+  const double any =
+      fluid_bad >= 0.0
+          ? fluid_bad
+          : exec_.max_of(
+                fluid.size(),
+                [&](std::size_t i) {
+                  return bad_fluid(fluid.x[i], fluid.v[i], fluid.rho[i], d) ? 1.0 : 0.0;
+                },
+                0.0, Executor::kMinParallelCheap);
   if (any > 0.0) {
     for (std::size_t i = 0; i < fluid.size(); ++i) {
-      if (!bad_fluid(i)) continue;
+      if (!bad_fluid(fluid.x[i], fluid.v[i], fluid.rho[i], d)) continue;
       std::ostringstream os;
       const Vec2 x = fluid.x[i];
       const bool finite = std::isfinite(x.x) && std::isfinite(x.y);

@@ -152,9 +152,17 @@ class FsiStepper {
   void set_end_time(double t) { prm_.end_time = t; }
 
   const FsiSystem& system() const { return sys_; }
-  FsiSystem& system() { return sys_; }
+  // Whoever may change the particles or the lists (a checkpoint's restore, tests) makes the
+  // stepper forget what its sweeps found about them (found_).
+  FsiSystem& system() {
+    found_ = {};
+    return sys_;
+  }
   const InteractionLists& lists() const { return *lists_; }
-  InteractionLists& lists() { return *lists_; }
+  InteractionLists& lists() {
+    found_ = {};
+    return *lists_;
+  }
 
   // The stepper's own state besides the particle sets (checkpoints, app/checkpoint.h):
   // f(name, value&) per counter; the body loads of the last evaluation through
@@ -189,13 +197,36 @@ class FsiStepper {
   // whether it ran (pass it on to evaluate_rates).
   bool advance_bodies(double t, double dt, RatePass next);
   // Both steps' end: the absorbing zone over the step, the step count, the state check.
-  void end_step(double dt, PhaseClock& clock, PhaseTimes& t);
-  void check_state() const;
+  // fluid_bad: whether the last sweep found a fluid particle check_state() rejects, or
+  // negative to have check_state() look.
+  void end_step(double dt, PhaseClock& clock, PhaseTimes& t, double fluid_bad = -1.0);
+  void check_state(double fluid_bad = -1.0) const;
+  // The integrator's last sweep of a step: v, rho, p by `update(i)`, and, unless the
+  // absorbing zone changes v and rho after it, the state check's test and the next step
+  // limit's maxima over the same particles (found_). Returns fluid_bad for end_step().
+  template <class Update>
+  double last_sweep(Update&& update);
+  // A drift sweep: x by `update(i)`, and the lists' displacement max |x - x at the build|²
+  // (found_.fluid_d2).
+  template <class Update>
+  void drift_sweep(Update&& update);
   // Every body particle finite and inside the domain at `time`; else DivergenceError.
   void check_bodies(double time) const;
 
+  // What the integrator's sweeps found on their way (Executor::maxima_of), for the next
+  // operator that would otherwise sweep the particles again for it; each is used once and
+  // describes the particles as they are then (nothing writes x, v, a between; system() and
+  // lists() forget them). Maxima are exact in any order: the bits are those of the separate
+  // sweeps (docs/validation.md §6 "Throughput", session 17).
+  struct Found {
+    bool maxima = false;  // next_maxima holds the maxima of the current v and a
+    FluidMaxima next_maxima;
+    double fluid_d2 = -1.0;  // the lists' fluid displacement, or negative: unknown
+  };
+
   FsiParams prm_;
   FsiSystem sys_;
+  Found found_;
   const Executor& exec_;
   std::unique_ptr<InteractionLists> lists_;
   DualTimeStepping dual_;

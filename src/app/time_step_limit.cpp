@@ -24,17 +24,23 @@ std::string describe(const StepLimit& lim, const std::vector<SolidBody>& bodies)
   return "none";
 }
 
+FluidMaxima fluid_maxima(const FluidParticles& fluid, const Executor& exec) {
+  return {exec.max_of(
+              fluid.size(), [&](std::size_t i) { return norm2(fluid.v[i]); }, 0.0,
+              Executor::kMinParallelCheap),
+          exec.max_of(
+              fluid.size(), [&](std::size_t i) { return norm2(fluid.a[i]); }, 0.0,
+              Executor::kMinParallelCheap)};
+}
+
 StepLimit choose_time_step(const FluidParticles& fluid, const std::vector<SolidBody>& bodies,
-                           const Kernel& kernel_f, const StepLimitParams& prm,
-                           const Executor& exec) {
+                           const Kernel& kernel_f, const StepLimitParams& prm, const Executor& exec,
+                           const FluidMaxima* known) {
   StepLimit lim{std::numeric_limits<double>::infinity(), StepLimiter::None, 0};
   if (fluid.size() > 0) {
-    const double vmax = std::sqrt(exec.max_of(
-        fluid.size(), [&](std::size_t i) { return norm2(fluid.v[i]); }, 0.0,
-        Executor::kMinParallelCheap));
-    const double amax = std::sqrt(exec.max_of(
-        fluid.size(), [&](std::size_t i) { return norm2(fluid.a[i]); }, 0.0,
-        Executor::kMinParallelCheap));
+    const FluidMaxima m = known ? *known : fluid_maxima(fluid, exec);
+    const double vmax = std::sqrt(m.v2);
+    const double amax = std::sqrt(m.a2);
     const double h = kernel_f.h();
     lim = {prm.cfl * h / (prm.c0 + vmax), StepLimiter::FluidAcousticCfl, 0};
     if (amax > 0.0 && prm.acceleration_cfl > 0.0) {

@@ -42,9 +42,19 @@ struct StepLimitParams {
   bool bodies_share_step = false;  // false under dual time stepping (app/dual_time_stepping.h)
 };
 
-// The smallest of the criteria above; the first one found wins ties.
+// What the fluid criteria read from the particles: max |v|² and max |a|² [m²/s², m²/s⁴].
+struct FluidMaxima {
+  double v2 = 0.0;
+  double a2 = 0.0;
+};
+FluidMaxima fluid_maxima(const FluidParticles& fluid, const Executor& exec);
+
+// The smallest of the criteria above; the first one found wins ties. `known`: the fluid's
+// maxima as a sweep over the current v and a already found them (the integrator's last sweep,
+// app/fsi_stepper.cpp; maxima are exact in any order, so the step is the same), else
+// fluid_maxima() is called.
 StepLimit choose_time_step(const FluidParticles& fluid, const std::vector<SolidBody>& bodies,
-                           const Kernel& kernel_f, const StepLimitParams& prm,
-                           const Executor& exec);
+                           const Kernel& kernel_f, const StepLimitParams& prm, const Executor& exec,
+                           const FluidMaxima* known = nullptr);
 
 }  // namespace slamsph

@@ -5,21 +5,25 @@
 
 namespace slamsph {
 
-double InteractionLists::fluid_displacement2(const FluidParticles& f, const Executor& exec) const {
+double InteractionLists::fluid_displacement2(const FluidParticles& f, const Executor& exec,
+                                             double known) const {
+  if (known >= 0.0) return known;
   return exec.max_of(
       f.size(), [&](std::size_t i) { return norm2(f.x[i] - fluid_ref_[i]); }, 0.0,
       Executor::kMinParallelCheap);
 }
 
-bool InteractionLists::fluid_within_skin(const FluidParticles& f, const Executor& exec) const {
-  return fluid_ref_.size() == f.size() && fluid_displacement2(f, exec) < 0.25 * skin_ * skin_;
+bool InteractionLists::fluid_within_skin(const FluidParticles& f, const Executor& exec,
+                                         double fluid_d2) const {
+  return fluid_ref_.size() == f.size() &&
+         fluid_displacement2(f, exec, fluid_d2) < 0.25 * skin_ * skin_;
 }
 
 bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, const Executor& exec,
-                              bool force) {
+                              bool force, double fluid_d2) {
   if (!force && fluid_ref_.size() == f.size() && contact_ref_.size() == c.size()) {
     const double lim2 = 0.25 * skin_ * skin_;
-    const double df = fluid_displacement2(f, exec);
+    const double df = fluid_displacement2(f, exec, fluid_d2);
     const double dc = exec.max_of(
         c.size(), [&](std::size_t i) { return norm2(c.x[i] - contact_ref_[i]); }, 0.0,
         Executor::kMinParallelCheap);

@@ -21,15 +21,20 @@ class InteractionLists {
       : support_ff_(support_ff), support_fc_(support_fc), skin_(skin) {}
 
   // Rebuilds if needed (or if `force`); returns true if it rebuilt. May permute `f`.
+  // fluid_d2: max |x_i - fluid_reference()[i]|² over the fluid as a sweep that moved the
+  // particles already found it (the drift, app/fsi_stepper.cpp; a maximum is exact in any
+  // order), or negative to have it computed here; only used while the sizes agree.
   bool update(FluidParticles& f, const ContactParticles& c, const Executor& exec,
-              bool force = false);
+              bool force = false, double fluid_d2 = -1.0);
 
   // False if the next update() rebuilds because of the fluid (a fluid particle has moved
   // half the skin, or the fluid changed size): update() may still rebuild for the contact
   // particles. While true, ff() holds for the fluid's current positions whatever the
   // contact does, up to such a rebuild (app/fsi_stepper.h: the water's pair pass beside
   // the bodies' sub-steps).
-  bool fluid_within_skin(const FluidParticles& f, const Executor& exec) const;
+  // fluid_d2 as for update().
+  bool fluid_within_skin(const FluidParticles& f, const Executor& exec,
+                         double fluid_d2 = -1.0) const;
 
   const BandedPairs& ff() const { return ff_; }  // fluid–fluid, each pair once
   const NeighbourList& fc() const { return fc_; }
@@ -53,8 +58,9 @@ class InteractionLists {
 
  private:
   double cell_size() const;
-  // max |x_i - x_i at the last build|^2 over the fluid (sizes equal).
-  double fluid_displacement2(const FluidParticles& f, const Executor& exec) const;
+  // max |x_i - x_i at the last build|^2 over the fluid (sizes equal): `known` if not
+  // negative, else computed.
+  double fluid_displacement2(const FluidParticles& f, const Executor& exec, double known) const;
   // Grids and lists from fluid positions xf (already in cell order) and contact xc; with
   // fluid_grid_ready the fluid grid already bins xf.
   void build(const std::vector<Vec2>& xf, const std::vector<Vec2>& xc, const Executor& exec,

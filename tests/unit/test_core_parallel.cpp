@@ -4,6 +4,7 @@
 // thread that spins for no time (SLAMSPH_SPIN_US=0, every wait a futex sleep) still wakes.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -55,6 +56,41 @@ TEST(Executor, LoopsGiveTheSameAnswerOnAnyThreadCount) {
   EXPECT_EQ(Executor(2).max_of(
                 0, [](std::size_t) { return 1.0; }, -5.0),
             -5.0);
+}
+
+// maxima_of (app/fsi_stepper.cpp's fused sweeps): each component is max_of's, on any thread
+// count, NaN never taken and init for an empty range; g runs once per item, so it may write
+// item i's own entries on the way.
+TEST(Executor, MaximaOfIsMaxOfForEachComponent) {
+  const std::size_t n = 100003;
+  auto item = [](std::size_t i) {
+    return std::array<double, 3>{value(i), -value(i),
+                                 i % 7 == 3 ? std::nan("") : std::cos(static_cast<double>(i))};
+  };
+  std::array<double, 3> ref{};
+  for (std::size_t k = 0; k < 3; ++k)
+    ref[k] = Executor(1).max_of(
+        n, [&](std::size_t i) { return item(i)[k]; }, -7.0, Executor::kMinParallelCheap);
+  for (int threads : {1, 2, 3}) {
+    const Executor exec(threads);
+    std::vector<int> hits(n, 0);
+    const std::array<double, 3> m = exec.maxima_of<3>(
+        n,
+        [&](std::size_t i) {
+          ++hits[i];
+          return item(i);
+        },
+        -7.0, Executor::kMinParallelCheap);
+    EXPECT_EQ(m, ref) << threads;
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(hits[i], 1) << i;
+    EXPECT_EQ(exec.maxima_of<2>(
+                  0,
+                  [](std::size_t) {
+                    return std::array<double, 2>{1.0, 2.0};
+                  },
+                  -5.0),
+              (std::array<double, 2>{-5.0, -5.0}));
+  }
 }
 
 // for_each_weighted visits every item once, and each thread's share costs about the same
