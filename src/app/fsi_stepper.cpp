@@ -78,10 +78,6 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
     // eligible advance done in turn is charged that part's time too (BesideChoice compares
     // like with like).
     double fixed_seconds = 0.0;
-    const auto virtual_state = [&](VirtualSubset subset) {
-      compute_virtual_state(contact, fluid, lists_->cf(), sys_.kernel_c, sys_.eos, prm_.gravity,
-                            exec_, subset, &fixed_contact_);
-    };
     if (fluid_pass_done && fixed_virtual_beside_) {
       virtual_state(VirtualSubset::Moving);
     } else if (pending_) {
@@ -129,6 +125,11 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
   clock.lap(t.contact);
 }
 
+void FsiStepper::virtual_state(VirtualSubset subset) {
+  compute_virtual_state(sys_.contact, sys_.fluid, lists_->cf(), sys_.kernel_c, sys_.eos,
+                        prm_.gravity, exec_, subset, &fixed_contact_);
+}
+
 void FsiStepper::fluid_pass(RatePass pass) {
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};
@@ -173,9 +174,7 @@ bool FsiStepper::advance_bodies(double t, double dt, RatePass next) {
   if (beside)
     exec_.concurrently(bodies, [&] {
       fluid_pass(next);
-      if (fixed_beside)
-        compute_virtual_state(sys_.contact, sys_.fluid, lists_->cf(), sys_.kernel_c, sys_.eos,
-                              prm_.gravity, exec_, VirtualSubset::Fixed, &fixed_contact_);
+      if (fixed_beside) virtual_state(VirtualSubset::Fixed);
     });
   else
     bodies();

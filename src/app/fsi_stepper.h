@@ -54,6 +54,7 @@
 #include "coupling/force_correction_kind.h"
 #include "coupling/interaction_lists.h"
 #include "coupling/substep_average.h"
+#include "coupling/virtual_pressure.h"
 #include "coupling/wall_acceleration_kind.h"
 #include "fluid/absorbing_zone.h"
 #include "fluid/fluid_integrator_kind.h"
@@ -188,6 +189,8 @@ class FsiStepper {
   void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
   // Step 4 of the rate evaluation: the water–water GSPH pass.
   void fluid_pass(RatePass pass);
+  // Step 3 for the contact entries `subset` names (fixed_contact_).
+  void virtual_state(VirtualSubset subset);
   // Whether advance_bodies() may run the water's pass beside the bodies (header comment):
   // two threads, water, and sub-cycled elastic bodies all on one-thread teams.
   bool bodies_beside_fluid_pass() const;

@@ -272,25 +272,8 @@ class Executor {
   template <class G>
   double max_of(std::size_t n, G&& g, double init = -std::numeric_limits<double>::infinity(),
                 std::size_t min_items = kMinParallel) const {
-    auto max_range = [&](std::size_t b, std::size_t e) {
-      double m = init;
-      for (std::size_t i = b; i < e; ++i) {
-        const double v = g(i);
-        if (v > m) m = v;
-      }
-      return m;
-    };
-    const int t = on_caller(n, min_items) ? 1 : team_now(threads_);
-    if (t == 1) return max_range(0, n);
-    std::vector<double> part(static_cast<std::size_t>(t), init);
-    region(t, [&](int rank) {
-      const auto [b, e] = share(n, rank, t);
-      part[static_cast<std::size_t>(rank)] = max_range(b, e);
-    });
-    double m = init;
-    for (const double v : part)
-      if (v > m) m = v;
-    return m;
+    return maxima_of<1>(
+        n, [&g](std::size_t i) { return std::array<double, 1>{g(i)}; }, init, min_items)[0];
   }
 
   // Component-wise max over i of g(i), an std::array<double, N>: N maxima in one sweep, each
