@@ -1,5 +1,6 @@
 #include "app/fsi_stepper.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -35,10 +36,11 @@ FsiStepper::FsiStepper(const FsiParams& params, FsiSystem system, const Executor
 }
 
 // The order of the operators is documented in the header; do not reorder.
-void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
-                                bool fluid_pass_done) {
+bool FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
+                                bool fluid_pass_done, const AfterFluidPass* then) {
   FluidParticles& fluid = sys_.fluid;
   ContactParticles& contact = sys_.contact;
+  bool fused = false;
   // A failed set that grew re-plans the ghosts around it (coupling/failure_zone_ghosts.h):
   // the contact set changes size, so the fluid–contact lists are rebuilt.
   const bool replanned = replan_around_failures(sys_.layout, sys_.bodies);
@@ -90,9 +92,13 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
       virtual_state(VirtualSubset::All);
     }
     fixed_virtual_beside_ = false;
+    // Steps 5 and 6 read the water's x, v, rho, p, which step 4 does not write, and write only
+    // the contact set and their own terms: before step 4 when `then` changes v, rho, p in it.
+    fused = then != nullptr && !fluid_pass_done && pass == RatePass::Both;
+    if (fused) contact_before_pass(cp);
     clock.lap(t.contact);
     const auto start = std::chrono::steady_clock::now();
-    if (!fluid_pass_done) fluid_pass(pass);
+    if (!fluid_pass_done) fluid_pass(pass, fused ? then : nullptr);
     if (pending_) {
       pending_->record(
           pending_beside_,
@@ -101,18 +107,20 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
       pending_ = nullptr;
     }
     clock.lap(t.fluid_rates);
-    add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_, pass,
-                         &contact_pairs_);
-    if (pass != RatePass::Continuity)  // the pair forces just computed, each pair once
-      compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_,
-                               &contact_pairs_, &lists_->cf_in_fc());
+    if (!fused) {
+      add_contact_to_fluid(fluid, contact, lists_->fc(), sys_.kernel_c, cp, exec_, pass,
+                           &contact_pairs_);
+      if (pass != RatePass::Continuity)  // the pair forces just computed, each pair once
+        compute_contact_reaction(contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_,
+                                 &contact_pairs_, &lists_->cf_in_fc());
+    }
     // The flags belong to the end-of-step positions (the momentum pass sees mid-step ones).
     if (pass != RatePass::Momentum)
       leaked_ = update_leak_flags(fluid, contact, lists_->fc(), exec_);
   }
   if (pass == RatePass::Continuity) {  // the bodies keep the force of the momentum pass
     clock.lap(t.contact);
-    return;
+    return fused;
   }
   scatter_contact_forces(contact, sys_.layout, sys_.bodies);
   for (std::size_t b = 0; b < sys_.bodies.size(); ++b) {
@@ -123,6 +131,25 @@ void FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
   for (std::size_t c = 0; c < contact.size(); ++c)
     loads_[contact.body[c]].viscous += contact.force_viscous[c];
   clock.lap(t.contact);
+  return fused;
+}
+
+void FsiStepper::contact_before_pass(const ContactParams& cp) {
+  FluidParticles& fluid = sys_.fluid;
+  if (contact_a_.size() != fluid.size()) {
+    contact_a_.assign(fluid.size(), Vec2{-0.0, -0.0});
+    contact_drho_.assign(fluid.size(), -0.0);
+  }
+  // add_contact_to_fluid adds to a and drho of the particles with contact partners: here to
+  // the -0 entries of the side arrays (the last sweep in step 4 sets them back to -0).
+  fluid.a.swap(contact_a_);
+  fluid.drho.swap(contact_drho_);
+  add_contact_to_fluid(fluid, sys_.contact, lists_->fc(), sys_.kernel_c, cp, exec_, RatePass::Both,
+                       &contact_pairs_);
+  fluid.a.swap(contact_a_);
+  fluid.drho.swap(contact_drho_);
+  compute_contact_reaction(sys_.contact, fluid, lists_->cf(), sys_.kernel_c, cp, exec_,
+                           &contact_pairs_, &lists_->cf_in_fc());
 }
 
 void FsiStepper::virtual_state(VirtualSubset subset) {
@@ -130,10 +157,12 @@ void FsiStepper::virtual_state(VirtualSubset subset) {
                         prm_.gravity, exec_, subset, &fixed_contact_);
 }
 
-void FsiStepper::fluid_pass(RatePass pass) {
+void FsiStepper::fluid_pass(RatePass pass, const AfterFluidPass* then) {
   const GsphParams gp{sys_.eos.c0, prm_.limiter_omega, prm_.viscosity, prm_.gravity,
                       prm_.hydrostatic_correction};
-  compute_gsph_fluid_rates(sys_.fluid, lists_->ff(), sys_.kernel_f, gp, exec_, pass);
+  if (then) band_maxima_.assign(std::max<std::size_t>(lists_->ff().bands(), 1), {});
+  compute_gsph_fluid_rates(sys_.fluid, lists_->ff(), sys_.kernel_f, gp, exec_, pass, PairLoop::Auto,
+                           then);
 }
 
 bool FsiStepper::bodies_beside_fluid_pass() const {
@@ -319,16 +348,60 @@ void FsiStepper::step() {
   const bool fluid_done = advance_bodies(time_, dt, RatePass::Both);
   time_ += dt;
   clock.lap(t.solid_substeps);
-  evaluate_rates(clock, t, RatePass::Both, fluid_done);
-  dual_.correct(sys_.bodies, dt);
-  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
-  clock.lap(t.solid_substeps);
-  w = view(f);  // a neighbour rebuild permutes the arrays
-  const double bad = last_sweep([=](std::size_t i) {
+  const auto kick = [eos, hdt](const FluidView& w, std::size_t i) {
     w.v[i] = w.v_half[i] + hdt * w.a[i];
     w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
     w.p[i] = eos.pressure(w.rho[i]);
-  });
+  };
+  // The last sweep inside step 4's band tasks (evaluate_rates' `then`), on bands the pass has
+  // just left in the cache: the contact's terms (computed before the pass, contact_before_pass)
+  // added to a and drho in their place, after the pass's own finish, then the kick, the state
+  // test and the maxima, each particle's operations those of the separate operators in their
+  // order (the same bits). Not with the absorbing zone (it changes v and rho after the sweep).
+  AfterFluidPass in_pass;
+  if (!prm_.absorbing_zone.active())
+    in_pass = [this, kick](std::size_t begin, std::size_t end, std::size_t slot) {
+      const FluidView w = view(sys_.fluid);
+      const NeighbourList& fc = lists_->fc();
+      const bool contact = fc.start.size() == sys_.fluid.size() + 1;
+      const std::uint32_t* const fs = fc.start.data();
+      Vec2* const ca = contact_a_.data();
+      double* const cd = contact_drho_.data();
+      const Box d = prm_.domain;
+      std::array<double, 3> m{0.0, 0.0, 0.0};
+      for (std::size_t i = begin; i < end; ++i) {
+        if (contact && fs[i] != fs[i + 1]) {  // add_contact_to_fluid's additions, then -0 again
+          w.a[i] += ca[i];
+          w.drho[i] += cd[i];
+          ca[i] = Vec2{-0.0, -0.0};
+          cd[i] = -0.0;
+        }
+        kick(w, i);
+        const std::array<double, 3> q{norm2(w.v[i]), norm2(w.a[i]),
+                                      bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
+        for (std::size_t k = 0; k < 3; ++k)
+          if (q[k] > m[k]) m[k] = q[k];  // Executor::maxima_of's comparison
+      }
+      band_maxima_[slot] = m;
+    };
+  const bool kicked =
+      evaluate_rates(clock, t, RatePass::Both, fluid_done, in_pass ? &in_pass : nullptr);
+  dual_.correct(sys_.bodies, dt);
+  for (std::size_t b = 0; b < sys_.bodies.size(); ++b) received_[b] += dual_.received(b);
+  clock.lap(t.solid_substeps);
+  double bad = 0.0;
+  if (kicked) {  // the maxima over the bands, as last_sweep's over its shares
+    std::array<double, 3> m{0.0, 0.0, 0.0};
+    for (const std::array<double, 3>& q : band_maxima_)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (q[k] > m[k]) m[k] = q[k];
+    found_.maxima = true;
+    found_.next_maxima = {m[0], m[1]};
+    bad = m[2];
+  } else {
+    w = view(f);  // a neighbour rebuild permutes the arrays
+    bad = last_sweep([=](std::size_t i) { kick(w, i); });
+  }
   clock.lap(t.fluid_integration);
   end_step(dt, clock, t, bad);
 }

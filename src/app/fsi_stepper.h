@@ -59,6 +59,7 @@
 #include "fluid/absorbing_zone.h"
 #include "fluid/fluid_integrator_kind.h"
 #include "fluid/fluid_particles.h"
+#include "fluid/gsph_fluid_rates.h"
 #include "fluid/tait_eos.h"
 #include "solid/solid_body.h"
 
@@ -184,11 +185,19 @@ class FsiStepper {
   // `pass` (fluid_integrator_kind.h): Continuity leaves the bodies' fluid force and loads as
   // the last momentum pass set them; Momentum leaves the leak flags.
   // fluid_pass_done: step 4 was done beside the bodies (advance_bodies) for these lists.
-  void evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both,
-                      bool fluid_pass_done = false);
+  // then: the integrator's last sweep, to run in step 4's band tasks (AfterFluidPass) when
+  // step 4 runs here with RatePass::Both; steps 5 and 6 then run before step 4, their
+  // additions to the water's a and drho held in contact_a_ / contact_drho_ and added by
+  // `then` in their place (fuse_kick). Returns whether `then` ran.
+  bool evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass = RatePass::Both,
+                      bool fluid_pass_done = false, const AfterFluidPass* then = nullptr);
   void step_symplectic(double dt, PhaseClock& clock, PhaseTimes& t);
   // Step 4 of the rate evaluation: the water–water GSPH pass.
-  void fluid_pass(RatePass pass);
+  void fluid_pass(RatePass pass, const AfterFluidPass* then = nullptr);
+  // Steps 5 and 6 before step 4 (evaluate_rates' `then`): the contact's additions to a and
+  // drho go to contact_a_ / contact_drho_, whose entries are -0 but for the water particles
+  // with contact partners (x + -0 = x for every x: those entries are exactly the added terms).
+  void contact_before_pass(const ContactParams& cp);
   // Step 3 for the contact entries `subset` names (fixed_contact_).
   void virtual_state(VirtualSubset subset);
   // Whether advance_bodies() may run the water's pass beside the bodies (header comment):
@@ -236,6 +245,11 @@ class FsiStepper {
   std::vector<BodyLoad> loads_;
   std::vector<SubstepAverage> averages_;  // per body
   ContactPairForces contact_pairs_;       // kept by the fluid's contact sum for the reaction
+  // The contact's terms to the water computed before step 4 (contact_before_pass), and the
+  // last sweep's maxima per band of step 4 (max |v|², max |a|², bad), when it ran there.
+  std::vector<Vec2> contact_a_;
+  std::vector<double> contact_drho_;
+  std::vector<std::array<double, 3>> band_maxima_;
   StepLimit limit_;
   double time_ = 0.0;
   long steps_ = 0;

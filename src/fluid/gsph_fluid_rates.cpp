@@ -92,7 +92,8 @@ void scalar_band(const GsphBandData& d, const Kernel& kernel_in, std::uint32_t i
 
 template <bool kViscous, KernelType kType, RatePass kPass>
 void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel_in,
-                const GsphParams& prm, const Executor& exec, PairLoop loop) {
+                const GsphParams& prm, const Executor& exec, PairLoop loop,
+                const AfterFluidPass* then) {
   constexpr bool kMomentum = kPass != RatePass::Continuity;
   constexpr bool kContinuity = kPass != RatePass::Momentum;
   // The pass's arrays and constants, for either loop.
@@ -153,6 +154,7 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
       pair_loop(pairs.band_start[band], pairs.band_start[band + 1]);
     });
     exec.for_each(f.size(), finish);
+    if (then) (*then)(0, f.size(), 0);
     return;
   }
   // One sweep: the task of band b reads and writes bands b and b + 1 only, the even bands run
@@ -165,6 +167,12 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
     if (band >= bands) return;
     for (std::size_t i = pairs.band_start[band]; i < pairs.band_start[band + 1]; ++i) op(i);
   };
+  // A finished band is handed on (AfterFluidPass): by the same argument no task reads it again.
+  const auto finish_rows = [&](std::size_t band) {
+    if (band >= bands) return;
+    rows(band, finish);
+    if (then) (*then)(pairs.band_start[band], pairs.band_start[band + 1], band);
+  };
   exec.for_alternating(bands, [&](std::size_t band) {
     const bool odd = band % 2 == 1;
     if (!odd) {
@@ -173,44 +181,46 @@ void rates_impl(FluidParticles& f, const BandedPairs& pairs, const Kernel& kerne
     }
     pair_loop(pairs.band_start[band], pairs.band_start[band + 1]);
     if (odd) {
-      rows(band, finish);
-      rows(band + 1, finish);
+      finish_rows(band);
+      finish_rows(band + 1);
     } else if (band == 0) {
-      rows(band, finish);
+      finish_rows(band);
     }
   });
 }
 
 template <bool kViscous, RatePass kPass>
 void dispatch_kernel(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
-                     const GsphParams& prm, const Executor& exec, PairLoop loop) {
+                     const GsphParams& prm, const Executor& exec, PairLoop loop,
+                     const AfterFluidPass* then) {
   if (kernel.type() == KernelType::WendlandC2)
-    rates_impl<kViscous, KernelType::WendlandC2, kPass>(f, ff, kernel, prm, exec, loop);
+    rates_impl<kViscous, KernelType::WendlandC2, kPass>(f, ff, kernel, prm, exec, loop, then);
   else
-    rates_impl<kViscous, KernelType::CubicSpline, kPass>(f, ff, kernel, prm, exec, loop);
+    rates_impl<kViscous, KernelType::CubicSpline, kPass>(f, ff, kernel, prm, exec, loop, then);
 }
 
 template <RatePass kPass>
 void dispatch_viscous(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
-                      const GsphParams& prm, const Executor& exec, PairLoop loop) {
+                      const GsphParams& prm, const Executor& exec, PairLoop loop,
+                      const AfterFluidPass* then) {
   if (prm.viscosity > 0.0)
-    dispatch_kernel<true, kPass>(f, ff, kernel, prm, exec, loop);
+    dispatch_kernel<true, kPass>(f, ff, kernel, prm, exec, loop, then);
   else
-    dispatch_kernel<false, kPass>(f, ff, kernel, prm, exec, loop);
+    dispatch_kernel<false, kPass>(f, ff, kernel, prm, exec, loop, then);
 }
 
 }  // namespace
 
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& ff, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec, RatePass pass,
-                              PairLoop loop) {
+                              PairLoop loop, const AfterFluidPass* then) {
   switch (pass) {
     case RatePass::Both:
-      return dispatch_viscous<RatePass::Both>(f, ff, kernel, prm, exec, loop);
+      return dispatch_viscous<RatePass::Both>(f, ff, kernel, prm, exec, loop, then);
     case RatePass::Momentum:
-      return dispatch_viscous<RatePass::Momentum>(f, ff, kernel, prm, exec, loop);
+      return dispatch_viscous<RatePass::Momentum>(f, ff, kernel, prm, exec, loop, then);
     case RatePass::Continuity:
-      return dispatch_viscous<RatePass::Continuity>(f, ff, kernel, prm, exec, loop);
+      return dispatch_viscous<RatePass::Continuity>(f, ff, kernel, prm, exec, loop, then);
   }
 }
 

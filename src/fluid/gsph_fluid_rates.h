@@ -9,6 +9,9 @@
 // (core/cell_grid.h, BandedPairs) and applied to both particles; the bands make that race-free and
 // keep the summation order, hence the results, independent of the thread count.
 #pragma once
+#include <cstddef>
+#include <functional>
+
 #include "core/cell_grid.h"
 #include "core/kernel.h"
 #include "core/parallel.h"
@@ -32,8 +35,17 @@ struct GsphParams {
 // scalar one. All give the same sums.
 enum class PairLoop { Auto, Scalar, FourLanes, EightLanes };
 
+// Work on particles the pass has finished: then(begin, end, slot) is called once for each
+// band's particles [begin, end), slot = the band's index (0, once for every particle, when
+// the lists do not cover the particles), right after their a and drho are final and when no
+// task of the pass will read or write them again, so that it may write their v, rho and p
+// (not x) and read their a and drho on bands still in the cache (app/fsi_stepper.cpp: the
+// integrator's last sweep). It must touch only particles [begin, end); calls run in parallel.
+using AfterFluidPass = std::function<void(std::size_t begin, std::size_t end, std::size_t slot)>;
+
 void compute_gsph_fluid_rates(FluidParticles& f, const BandedPairs& pairs, const Kernel& kernel,
                               const GsphParams& prm, const Executor& exec,
-                              RatePass pass = RatePass::Both, PairLoop loop = PairLoop::Auto);
+                              RatePass pass = RatePass::Both, PairLoop loop = PairLoop::Auto,
+                              const AfterFluidPass* then = nullptr);
 
 }  // namespace slamsph
