@@ -249,6 +249,12 @@ FluidView view(FluidParticles& f) {
           f.rho.data(), f.drho.data(), f.rho_half.data(), f.p.data()};
 }
 
+// What the last sweep finds at particle i after its update: |v|², |a|² (the next step's
+// limit) and 1 if check_state() rejects it.
+inline std::array<double, 3> findings(const FluidView& w, std::size_t i, const Box& d) {
+  return {norm2(w.v[i]), norm2(w.a[i]), bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
+}
+
 }  // namespace
 
 // Each particle's own operations run as in a sweep of their own (the same bits); the two
@@ -268,8 +274,7 @@ double FsiStepper::last_sweep(Update&& update) {
       f.size(),
       [=](std::size_t i) {
         update(i);
-        return std::array<double, 3>{norm2(w.v[i]), norm2(w.a[i]),
-                                     bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
+        return findings(w, i, d);
       },
       0.0, Executor::kMinParallelCheap);
   found_.maxima = true;
@@ -359,7 +364,7 @@ void FsiStepper::step() {
   // test and the maxima, each particle's operations those of the separate operators in their
   // order (the same bits). Not with the absorbing zone (it changes v and rho after the sweep).
   AfterFluidPass in_pass;
-  if (!prm_.absorbing_zone.active())
+  if (kick_in_pass_ && !prm_.absorbing_zone.active())
     in_pass = [this, kick](std::size_t begin, std::size_t end, std::size_t slot) {
       const FluidView w = view(sys_.fluid);
       const NeighbourList& fc = lists_->fc();
@@ -377,8 +382,7 @@ void FsiStepper::step() {
           cd[i] = -0.0;
         }
         kick(w, i);
-        const std::array<double, 3> q{norm2(w.v[i]), norm2(w.a[i]),
-                                      bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0};
+        const std::array<double, 3> q = findings(w, i, d);
         for (std::size_t k = 0; k < 3; ++k)
           if (q[k] > m[k]) m[k] = q[k];  // Executor::maxima_of's comparison
       }

@@ -147,6 +147,9 @@ class FsiStepper {
   const PhaseTimes& phase_times() const { return times_; }
   const FsiParams& params() const { return prm_; }
   void set_beside_schedule(BesideSchedule s) { beside_schedule_ = s; }
+  // Whether the kick-drift-kick step's last sweep may run in step 4's band tasks (step();
+  // default on; tests compare the two, bit for bit).
+  void set_kick_in_pass(bool on) { kick_in_pass_ = on; }
   // Advances that ran beside the water's pass, and of those the ones whose pass a neighbour
   // rebuild discarded (done again in turn).
   long beside_advances() const { return beside_advances_; }
@@ -271,6 +274,7 @@ class FsiStepper {
   bool pending_beside_ = false;
   double pending_seconds_ = 0.0;  // its wall seconds so far
   BesideSchedule beside_schedule_ = BesideSchedule::Measured;
+  bool kick_in_pass_ = true;
   long beside_advances_ = 0, beside_redone_ = 0;
 };
 

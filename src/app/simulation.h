@@ -27,6 +27,7 @@ class Simulation {
   void step() { stepper_->step(); }
   // Tests: how small bodies' sub-steps and the water's pass are scheduled (app/fsi_stepper.h).
   void set_beside_schedule(BesideSchedule s) { stepper_->set_beside_schedule(s); }
+  void set_kick_in_pass(bool on) { stepper_->set_kick_in_pass(on); }
   long beside_advances() const { return stepper_->beside_advances(); }
   long beside_passes_redone() const { return stepper_->beside_passes_redone(); }
   // The whole run with outputs; returns the process exit code (0 ok, 3 diverged).

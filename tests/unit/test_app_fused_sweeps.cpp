@@ -12,8 +12,10 @@
 // Divergence.FluidLeavingTheDomainExitsThreeAndKeepsOutputs (tests/regression).
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "app/simulation.h"
 #include "app/time_step_limit.h"
@@ -34,6 +36,10 @@ CaseConfig peer(bool symplectic) {
     cfg.numerics.cfl = 0.6;
   }
   return cfg;
+}
+
+bool same_bits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 // Δt of the next step as the fluid criteria give it from a sweep of their own.
@@ -93,4 +99,52 @@ TEST(FusedSweeps, ListsHoldAfterEveryStep) {
     }
     EXPECT_GT(sim.stepper().lists().rebuilds(), 2) << symplectic;
   }
+}
+
+// The kick-drift-kick step's last sweep inside the pass's band tasks, with the contact's terms
+// to the water computed before the pass and added there (FsiStepper::step, evaluate_rates'
+// `then`; docs/validation.md §6 "Throughput", session 18): every step's water state, rates and
+// limit, and the tank's contact forces, bit for bit those of the separate sweep, on 1 and 2
+// threads (20 000 particles: the bands and the sweeps split), and 1 and 2 threads alike.
+// Broken on purpose (scripts/mutation_check.sh "kick in the pass"): the contact's terms not
+// added in the band tasks fails here at the first step.
+TEST(FusedSweeps, KickInThePassIsTheSeparateSweep) {
+  std::vector<FluidParticles> end_state;
+  for (const int threads : {1, 2}) {
+    Simulation fused(peer(false), silent_options(threads));
+    Simulation apart(peer(false), silent_options(threads));
+    apart.set_kick_in_pass(false);
+    for (int k = 0; k < 30; ++k) {
+      fused.step();
+      apart.step();
+      ASSERT_EQ(fused.stepper().last_step_limit().dt, apart.stepper().last_step_limit().dt) << k;
+      const FluidParticles& a = std::as_const(fused).fluid();
+      const FluidParticles& b = std::as_const(apart).fluid();
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_TRUE(same_bits(a.x[i].x, b.x[i].x) && same_bits(a.x[i].y, b.x[i].y))
+            << "step " << k << " particle " << i << ", " << threads << " threads";
+        ASSERT_TRUE(same_bits(a.v[i].x, b.v[i].x) && same_bits(a.v[i].y, b.v[i].y))
+            << "step " << k << " particle " << i << ", " << threads << " threads";
+        ASSERT_TRUE(same_bits(a.a[i].x, b.a[i].x) && same_bits(a.a[i].y, b.a[i].y))
+            << "step " << k << " particle " << i << ", " << threads << " threads";
+        ASSERT_TRUE(same_bits(a.rho[i], b.rho[i]) && same_bits(a.p[i], b.p[i]) &&
+                    same_bits(a.drho[i], b.drho[i]))
+            << "step " << k << " particle " << i << ", " << threads << " threads";
+      }
+      const ContactParticles& ca = fused.stepper().system().contact;
+      const ContactParticles& cb = apart.stepper().system().contact;
+      ASSERT_EQ(ca.size(), cb.size());
+      for (std::size_t s = 0; s < ca.size(); ++s)
+        ASSERT_TRUE(same_bits(ca.force[s].x, cb.force[s].x) &&
+                    same_bits(ca.force[s].y, cb.force[s].y))
+            << "step " << k << " contact " << s;
+    }
+    end_state.push_back(std::as_const(fused).fluid());
+  }
+  for (std::size_t i = 0; i < end_state[0].size(); ++i)
+    ASSERT_TRUE(same_bits(end_state[0].v[i].x, end_state[1].v[i].x) &&
+                same_bits(end_state[0].v[i].y, end_state[1].v[i].y) &&
+                same_bits(end_state[0].rho[i], end_state[1].rho[i]))
+        << "1 against 2 threads, particle " << i;
 }
