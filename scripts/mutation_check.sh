@@ -15,7 +15,8 @@
 # solid law and the fused solid sub-step against the operator sequence, and the threads
 # tests (the water's pass beside small bodies' sub-steps), and (session 17) the executor's
 # tests (the learnt split of weighted loops), the step limit found in the integrator's last
-# sweep and the diverging runs' messages. Only these and slamsph are rebuilt per mutation.
+# sweep and the diverging runs' messages (session 18: also the last sweep inside the pass).
+# Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -129,6 +130,10 @@ M = [
   "bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0", "0.0 * (bad_fluid(w.x[i], w.v[i], w.rho[i], d) ? 1.0 : 0.0)"),
  ("fused sweeps: the drift's displacement taken as zero", "src/app/fsi_stepper.cpp",
   "return std::array<double, 1>{norm2(x[i] - x0[i])};", "return std::array<double, 1>{0.0 * norm2(x[i] - x0[i])};"),
+ # Session 18: the kick-drift-kick step's last sweep in the pass's band tasks, the contact's
+ # terms to the water computed before the pass and added there (app/fsi_stepper.cpp step).
+ ("kick in the pass: the contact's terms not added to a", "src/app/fsi_stepper.cpp",
+  "w.a[i] += ca[i];", "w.a[i] += 0.0 * ca[i];"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

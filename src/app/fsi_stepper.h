@@ -22,6 +22,12 @@
 //   7. update_leak_flags         fluid particles found inside a solid (leak counter)
 //   8. scatter_contact_forces    contact force → body.f_fluid (ghosts → their parent)
 //   9. body loads                total and viscous fluid force per body
+// In the kick-drift-kick step (without an absorbing zone, step 4 not run beside the bodies)
+// steps 5 and 6 run before step 4 — they read the water's x, v, rho, p, which step 4 does not
+// write — with step 5's terms held aside (contact_before_pass), and the step's last sweep
+// (the second half kick, the state test, the next limit's maxima) runs in step 4's band tasks
+// on each band as soon as the pass has finished it (AfterFluidPass), adding step 5's terms
+// first: per particle the same operations in the same order as 4, 5 and the separate sweep.
 // Step 4 reads only the water (x, v, rho, p and the fluid–fluid pairs), which the bodies'
 // sub-steps do not touch: on two threads, when every sub-cycled elastic body is small enough
 // to take its sub-steps on one thread anyway (Executor::threads_for with
