@@ -14,6 +14,7 @@
 #include "coupling/virtual_pressure.h"
 #include "coupling/wall_acceleration.h"
 #include "fluid/gsph_fluid_rates.h"
+#include "fluid/kick_lanes.h"
 #include "solid/elastic_substep.h"
 
 namespace slamsph {
@@ -341,14 +342,46 @@ void FsiStepper::step() {
   const TaitEos eos = sys_.eos;
   const double hdt = 0.5 * dt;
   FluidView w = view(f);
-  drift_sweep([=](std::size_t i) {
+  const auto drift = [=](std::size_t i) {
     w.v_half[i] = w.v[i] + hdt * w.a[i];
     w.rho_half[i] = w.rho[i] + hdt * w.drho[i];
     w.x[i] += dt * w.v_half[i];
     w.v[i] = w.v_half[i] + hdt * w.a[i];  // predicted, for the velocity-dependent rates
     w.rho[i] = w.rho_half[i] + hdt * w.drho[i];
     w.p[i] = eos.pressure(w.rho[i]);
-  });
+  };
+  // Both half kicks in eight lanes for the Tait exponent 7 where the CPU has them
+  // (fluid/kick_lanes.h: the scalar sweeps were bound by their divisions rho / rho0).
+  const bool lanes = kick_in_pass_ && eos.gamma == 7.0 && kick_lanes_avx512_available();
+  const std::vector<Vec2>& ref = lists_->fluid_reference();
+  if (lanes && ref.size() == f.size()) {
+    // drift_sweep in groups of kGroup particles, each through the lanes and its tail in turn:
+    // the same maximum (exact in any order).
+    constexpr std::size_t kGroup = 64;
+    const std::size_t n = f.size();
+    KickLaneData k{w.v_half, w.rho_half, w.a,      w.drho,          w.x,        w.v, w.rho,
+                   w.p,      hdt,        eos.rho0, eos.stiffness(), prm_.domain};
+    k.dt = dt;
+    k.x0 = ref.data();
+    const Vec2* const x0 = ref.data();
+    found_.fluid_d2 = exec_.maxima_of<1>(
+        (n + kGroup - 1) / kGroup,
+        [=](std::size_t g) {
+          const std::size_t b = g * kGroup, e = std::min(n, b + kGroup);
+          double m[3] = {0.0, 0.0, 0.0};
+          std::size_t i = kick_lanes_avx512(k, true, static_cast<std::uint32_t>(b),
+                                            static_cast<std::uint32_t>(e), m);
+          for (; i < e; ++i) {
+            drift(i);
+            const double d2 = norm2(w.x[i] - x0[i]);
+            if (d2 > m[0]) m[0] = d2;
+          }
+          return std::array<double, 1>{m[0]};
+        },
+        0.0, Executor::kMinParallelCheap / kGroup)[0];
+  } else {
+    drift_sweep(drift);
+  }
   clock.lap(t.fluid_integration);
   const bool fluid_done = advance_bodies(time_, dt, RatePass::Both);
   time_ += dt;
@@ -363,24 +396,35 @@ void FsiStepper::step() {
   // added to a and drho in their place, after the pass's own finish, then the kick, the state
   // test and the maxima, each particle's operations those of the separate operators in their
   // order (the same bits). Not with the absorbing zone (it changes v and rho after the sweep).
+  // For the Tait exponent 7 the kick runs in eight lanes where the CPU has them (kick_lanes.h;
+  // the separate sweep was bound by its divisions rho / rho0), the band's tail in turn.
   AfterFluidPass in_pass;
   if (kick_in_pass_ && !prm_.absorbing_zone.active())
-    in_pass = [this, kick](std::size_t begin, std::size_t end, std::size_t slot) {
+    in_pass = [this, kick, eos, hdt, lanes](std::size_t begin, std::size_t end, std::size_t slot) {
       const FluidView w = view(sys_.fluid);
       const NeighbourList& fc = lists_->fc();
-      const bool contact = fc.start.size() == sys_.fluid.size() + 1;
-      const std::uint32_t* const fs = fc.start.data();
-      Vec2* const ca = contact_a_.data();
-      double* const cd = contact_drho_.data();
       const Box d = prm_.domain;
-      std::array<double, 3> m{0.0, 0.0, 0.0};
-      for (std::size_t i = begin; i < end; ++i) {
-        if (contact && fs[i] != fs[i + 1]) {  // add_contact_to_fluid's additions, then -0 again
-          w.a[i] += ca[i];
+      if (fc.start.size() == sys_.fluid.size() + 1) {
+        const std::uint32_t* const fs = fc.start.data();
+        Vec2* const ca = contact_a_.data();
+        double* const cd = contact_drho_.data();
+        for (std::size_t i = begin; i < end; ++i) {
+          if (fs[i] == fs[i + 1]) continue;
+          w.a[i] += ca[i];  // add_contact_to_fluid's additions, then -0 again
           w.drho[i] += cd[i];
           ca[i] = Vec2{-0.0, -0.0};
           cd[i] = -0.0;
         }
+      }
+      std::array<double, 3> m{0.0, 0.0, 0.0};
+      std::size_t i = begin;
+      if (lanes) {
+        const KickLaneData k{w.v_half, w.rho_half, w.a,      w.drho,          w.x, w.v, w.rho,
+                             w.p,      hdt,        eos.rho0, eos.stiffness(), d};
+        i = kick_lanes_avx512(k, false, static_cast<std::uint32_t>(begin),
+                              static_cast<std::uint32_t>(end), m.data());
+      }
+      for (; i < end; ++i) {
         kick(w, i);
         const std::array<double, 3> q = findings(w, i, d);
         for (std::size_t k = 0; k < 3; ++k)

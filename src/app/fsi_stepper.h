@@ -153,8 +153,9 @@ class FsiStepper {
   const PhaseTimes& phase_times() const { return times_; }
   const FsiParams& params() const { return prm_; }
   void set_beside_schedule(BesideSchedule s) { beside_schedule_ = s; }
-  // Whether the kick-drift-kick step's last sweep may run in step 4's band tasks (step();
-  // default on; tests compare the two, bit for bit).
+  // Whether the kick-drift-kick step's last sweep may run in step 4's band tasks and both
+  // half kicks in lanes (step(); default on); off: the separate scalar sweeps, which the
+  // tests compare with, bit for bit.
   void set_kick_in_pass(bool on) { kick_in_pass_ = on; }
   // Advances that ran beside the water's pass, and of those the ones whose pass a neighbour
   // rebuild discarded (done again in turn).
