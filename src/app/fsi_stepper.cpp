@@ -446,6 +446,33 @@ void FsiStepper::step() {
     found_.maxima = true;
     found_.next_maxima = {m[0], m[1]};
     bad = m[2];
+  } else if (lanes && !prm_.absorbing_zone.active()) {
+    // The last sweep in lanes, in groups as the drift (step 4 ran beside the bodies).
+    w = view(f);  // a neighbour rebuild permutes the arrays
+    constexpr std::size_t kGroup = 64;
+    const std::size_t n = f.size();
+    const KickLaneData k{w.v_half, w.rho_half, w.a,      w.drho,          w.x,        w.v, w.rho,
+                         w.p,      hdt,        eos.rho0, eos.stiffness(), prm_.domain};
+    const Box d = prm_.domain;
+    const std::array<double, 3> m = exec_.maxima_of<3>(
+        (n + kGroup - 1) / kGroup,
+        [=](std::size_t g) {
+          const std::size_t b = g * kGroup, e = std::min(n, b + kGroup);
+          std::array<double, 3> q{0.0, 0.0, 0.0};
+          std::size_t i = kick_lanes_avx512(k, false, static_cast<std::uint32_t>(b),
+                                            static_cast<std::uint32_t>(e), q.data());
+          for (; i < e; ++i) {
+            kick(w, i);
+            const std::array<double, 3> r = findings(w, i, d);
+            for (std::size_t c = 0; c < 3; ++c)
+              if (r[c] > q[c]) q[c] = r[c];
+          }
+          return q;
+        },
+        0.0, Executor::kMinParallelCheap / kGroup);
+    found_.maxima = true;
+    found_.next_maxima = {m[0], m[1]};
+    bad = m[2];
   } else {
     w = view(f);  // a neighbour rebuild permutes the arrays
     bad = last_sweep([=](std::size_t i) { kick(w, i); });
