@@ -11,7 +11,13 @@ should be idle: the prediction is for an idle machine of this kind (the load ave
 each run is printed). Usage:
 
   bench/predict_vs_run.py BUILD/slamsph [--threads T ...] [--end-time S] [--set KEY=VALUE ...]
-                          [CASE.toml ...]
+                          [--repeat N] [CASE.toml ...]
+
+With --repeat N each case is predicted and run N times in turn and the medians are printed (the
+error is that of the medians; the single errors follow in brackets): on the shared 2-core
+machines of this kind two consecutive 2-thread runs of a small case differ by up to 1.35x
+(docs/validation.md §6 "Cost model", session 18), and the probes of `slamsph check` by as
+much.
 
 Cases default to the shipped ones (bench/calibrate_cost.py's list). Results go to a
 temporary folder that is removed afterwards.
@@ -48,7 +54,9 @@ def predict(slamsph, case, threads, extra):
                 substeps_per_step=subs,
                 wall=float(wall.group(1)) if threads == 1 else float(wall.group(2)),
                 solid=float(wall.group(4)),
-                cpu=float(cpu.group(1)), machine=machine.group(1) if machine else "not probed")
+                cpu=float(cpu.group(1)),
+                machine="/".join(re.findall(r"x([0-9.]+)", machine.group(1))) if machine
+                else "not probed")
 
 
 def measure(slamsph, case, threads, extra, out):
@@ -75,6 +83,7 @@ def main():
     ap.add_argument("--end-time", type=float, help="run (and predict) to this time [s]")
     ap.add_argument("--keep", metavar="DIR",
                     help="copy each run's summary.json to DIR/<case>_<threads>t.json")
+    ap.add_argument("--repeat", type=int, default=1, help="predictions and runs per case (medians)")
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="a case override for both the prediction and the run")
     a = ap.parse_intermixed_args()
@@ -82,7 +91,7 @@ def main():
     extra = ["--end-time", str(a.end_time)] if a.end_time else []
     for kv in a.set:
         extra += ["--set", kv]
-    print("| case | threads | machine factors | fluid steps pred / run | sub-steps pred / run "
+    print("| case | threads | machine factors (water/sub-step/set-up) | fluid steps pred / run | sub-steps pred / run "
           "| rebuilds pred / run | wall pred / run stepping (process) [s] | error | solid phase pred / run [s] "
           "| CPU pred (1 thread) / run [s] | load before |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
@@ -90,12 +99,13 @@ def main():
         for case in cases:
             for t in a.threads:
                 load = open("/proc/loadavg").read().split()[0]
-                p = predict(a.slamsph, case, t, extra)
-                m = measure(a.slamsph, case, t, extra, os.path.join(tmp, "run"))
-                s = m["summary"]
+                ps, ms = [], []
+                for _ in range(max(1, a.repeat)):
+                    ps.append(predict(a.slamsph, case, t, extra))
+                    ms.append(measure(a.slamsph, case, t, extra, os.path.join(tmp, "run")))
+                s = ms[-1]["summary"]
                 steps, subs = s["fluid_steps"], s["solid_substeps"]
                 rebuilds = s["neighbour_rebuilds"]
-                solid = s["time_split_s"]["solid_substeps"]
                 if a.keep:
                     os.makedirs(a.keep, exist_ok=True)
                     stem = os.path.splitext(os.path.basename(case))[0]
@@ -103,15 +113,31 @@ def main():
                         json.dump(s, f, indent=1)
                 # The model predicts the time stepping (summary.json wall_seconds), not the
                 # start-up (particles, lists) or the plots at the end (the process column).
-                stepping = s["wall_seconds"]
-                err = (p["wall"] - stepping) / stepping
+                stepping = median([m["summary"]["wall_seconds"] for m in ms])
+                solid = median([m["summary"]["time_split_s"]["solid_substeps"] for m in ms])
+                wall = median([p["wall"] for p in ps])
+                err = (wall - stepping) / stepping
+                singles = ""
+                if len(ms) > 1:
+                    singles = " (" + ", ".join(
+                        f"{100 * (p['wall'] - m['summary']['wall_seconds']) / m['summary']['wall_seconds']:+.0f}"
+                        for p, m in zip(ps, ms)) + ")"
+                p = ps[-1]
                 name = os.path.relpath(case, ROOT) + "".join(f" {kv}" for kv in a.set)
                 pred_subs = p["substeps_per_step"] * p["steps"]
-                print(f"| {name} | {t} | {p['machine']} | {p['steps']} / {steps} | "
+                print(f"| {name} | {t} | {', '.join(q['machine'] for q in ps)} | {p['steps']} / {steps} | "
                       f"{pred_subs} / {subs} | {p['rebuilds']} / {rebuilds} | "
-                      f"{p['wall']:.3g} / {stepping:.3g} ({m['wall']:.3g}) | {100 * err:+.0f} % | "
-                      f"{p['solid']:.3g} / {solid:.3g} | "
-                      f"{p['cpu']:.3g} / {m['cpu']:.3g} | {load} |", flush=True)
+                      f"{wall:.3g} / {stepping:.3g} ({median([m['wall'] for m in ms]):.3g}) | "
+                      f"{100 * err:+.0f} %{singles} | "
+                      f"{median([q['solid'] for q in ps]):.3g} / {solid:.3g} | "
+                      f"{median([q['cpu'] for q in ps]):.3g} / {median([m['cpu'] for m in ms]):.3g} | {load} |",
+                      flush=True)
+
+
+def median(xs):
+    xs = sorted(xs)
+    n = len(xs)
+    return xs[n // 2] if n % 2 else 0.5 * (xs[n // 2 - 1] + xs[n // 2])
 
 
 if __name__ == "__main__":

@@ -304,8 +304,14 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
   } else {
     c.contact_seconds = 1e-9 * steps * k.dry_contact_ns * nc;
   }
-  c.fluid_speedup = log_interpolate(nw, k.fluid_n_small, k.fluid_n_large, k.fluid_speedup_small,
-                                    k.fluid_speedup_large);
+  // Without water the contact phase's loops are over a few thousand contact particles, under
+  // Executor::kMinParallelCheap: they run on one thread (the tension bar 0.46-0.50 s on 1
+  // thread and 0.47-0.52 s on 2, the Johnson-Cook bar 0.54 and 0.56-0.64 s, the oscillating
+  // plate 9.2 and 8.0-9.8 s; docs/validation.md §6 "Cost model", session 18).
+  c.fluid_speedup = c.fluid_particles == 0
+                        ? 1.0
+                        : log_interpolate(nw, k.fluid_n_small, k.fluid_n_large,
+                                          k.fluid_speedup_small, k.fluid_speedup_large);
   const Executor two(2);
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     BodyCost& bc = c.bodies[i];

@@ -50,7 +50,8 @@
 //             log-linear in N_b between 25 000 and 60 000 particles, where the arrays leave
 //             the caches)
 // The wall time on T threads divides the water, lists and contact phases by the measured
-// two-thread speed-up S_f(N_water) and each body's sub-steps by S_s(N_b) when its team has
+// two-thread speed-up S_f(N_water) (1 without water: those loops are too short to split) and
+// each body's sub-steps by S_s(N_b) when its team has
 // two threads (Executor::threads_for with kSubstepParticlesPerThread), 1 otherwise; when every
 // elastic body's team has one thread, the water's pair pass takes min(S + P/S_f, max(S, P))
 // with the sub-steps S (app/fsi_stepper.h: beside them or after them, whichever the run
@@ -67,11 +68,20 @@ class Simulation;
 // Costs measured on the 2-core development machine (AMD EPYC, 1 MiB L2 per core, 32 MiB
 // L3) with `bench/calibrate_cost.py build/slamsph --steps 60 --repeat 3` (each phase's CPU
 // time in 1-thread runs of the shipped cases, fitted by least squares on the relative
-// error; docs/validation.md §6 "Cost model" has the table and the machine's load).
+// error; docs/validation.md §6 "Cost model" has the table and the machine's load). Refitted
+// in session 18 on the code of that day (the lane loops of sessions 14-16, the fused sweeps
+// and learnt splits of session 17), the 17 cases in three calls, idle: with the constants of
+// session 10 the probes had measured this machine at x0.53-0.6 of them while its whole runs
+// went at x0.7-1.0 (the water probe is mostly the pair pass, which the lanes made faster
+// than the rest), and the peer dam break, the tension bar and the Johnson-Cook bar fell
+// 28-39 % under their predictions on 2 threads.
 // Two-thread speed-ups: docs/validation.md §6 (throughput.sh, BM_RingSubsteps, idle).
 struct CostConstants {
-  double water_pair_ns_small = 11.8;  // per listed water–water pair per fluid step, at
-  double water_pair_ns_large = 20.6;  // ≤ water_n_small / ≥ water_n_large water particles
+  // Per listed water–water pair per fluid step, at ≤ water_n_small / ≥ water_n_large water
+  // particles, as the scalar loop's (the session 18 fit with the lane fractions below taken
+  // out: 5.07 and 7.38 ns measured in the lanes).
+  double water_pair_ns_small = 8.6;
+  double water_pair_ns_large = 12.4;
   double water_n_small = 3200, water_n_large = 166500;
   // The pair costs above were fitted on the scalar pair loop. The four-lane loop
   // (fluid/gsph_pair_band.h: Wendland kernel, CPUs with AVX2) takes this fraction of its time
@@ -84,36 +94,39 @@ struct CostConstants {
   // particles 32.8 against 38.5 ms of CPU on 1 thread, the 320 000-particle run's CPU 0.87x;
   // the 3 200-particle peer case the same within its noise), log-linear in between.
   double water_pair_eight_small = 1.0, water_pair_eight_large = 0.85;
-  double water_ns = 21.4;         // per water particle per fluid step
-  double rebuild_ns = 157.0;      // per water or contact particle per neighbour rebuild
-  double contact_pair_ns = 33.2;  // per listed fluid–contact pair (both lists) per fluid step
+  double water_ns = 14.5;         // per water particle per fluid step
+  double rebuild_ns = 152.0;      // per water or contact particle per neighbour rebuild (the
+                                  // fit counts the rebuilds of the steps, not the set-up's)
+  double contact_pair_ns = 18.4;  // per listed fluid–contact pair (both lists) per fluid step
   // Per contact particle per fluid step, no water: every phase but the sub-steps (body state,
-  // step limit, checks, records; the fit had only the contact phase, 12 ns): the oscillating
-  // plate to its end, 1 thread, session 13: 1.82 s over 31 557 steps of 1 872 particles.
-  double dry_contact_ns = 31.0;
-  // Per elastic pair entry per sub-step (SVK), ≤ solid_n_small particles: the fitted 100 ns
-  // per particle (on bodies of 3.0-3.27 entries per particle, mostly) over 3.15 entries.
-  double solid_pair_ns = 32.0;
+  // step limit, checks, records), from whole runs on 1 thread (session 18: the oscillating
+  // plate 1.25 s over 31 557 steps of 1 872 particles, 21.2 ns; the tension bar 21.8 ns):
+  // 60-step runs of these cases are mostly their first steps (the fit gave 68 ns).
+  double dry_contact_ns = 22.0;
+  // Per elastic pair entry per sub-step (SVK), ≤ solid_n_small particles: fitted (session 18;
+  // session 10's 100 ns per particle over 3.15 entries was 32 ns).
+  double solid_pair_ns = 21.5;
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
   // 60 000-particle ring of bench_solid runs 1.69x slower per pair entry than the 10 052 one
   // (BM_RingSubsteps, 1 thread, medians of 3, session 13: 29.1 against 17.2 ns per entry;
   // session 12 on another machine of this kind 1.95x; docs/validation.md §6). Since session 15
   // a body of >= 20 000 particles without an Eulerian switch takes its sub-steps in a
   // wavefront of up to 20 per sweep (solid/substep_levels.h): the 60 000-particle ring 1.45-
-  // 1.55x faster on 1 thread (benchmark CPU time, alternated): 54 / 1.5 = 36 ns.
-  double solid_pair_ns_large = 36.0;
+  // 1.55x faster on 1 thread (benchmark CPU time, alternated): 54 / 1.5 = 36 ns, scaled in
+  // session 18 as the small bodies' constant (32 → 21.5 ns).
+  double solid_pair_ns_large = 24.0;
   // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
-  // with the symplectic step): the two fits gave 8 and 140 ns (poorly determined by 60-step
-  // runs); 60 ns reproduces the one-sub-step-per-step cases (oscillating plate, tension bar:
-  // 90–239 and 132–226 ns per particle-step measured). Scaled by its own machine factor.
-  double solid_call_ns = 60.0;
+  // with the symplectic step): fitted in session 18 (sessions 10-13: 8 and 140 ns in two
+  // fits, 60 ns taken). Scaled by its own machine factor.
+  double solid_call_ns = 44.5;
   // A Johnson–Cook sub-step against an SVK one, for sub-steps that do not yield: fitted on
-  // the calibration's 60 steps; session 14 measured x2.3-3.0 on a 2 000-particle plate on one
-  // thread (ns per pair entry), and x5.7-7.8 with the plate stretched so that every particle
-  // yields (the return mapping's Newton iterations; docs/validation.md §6 "Cost model"). A
-  // body that yields for much of its run costs more (the notched specimen, which yields in
-  // 47 % of its particle-sub-steps, 2.3x its prediction); the initial state does not tell.
-  double johnson_cook_factor = 2.56;
+  // the calibration's 60 steps (2.56 in session 10, 2.98 in session 18); session 14 measured
+  // x2.3-3.0 on a 2 000-particle plate on one thread (ns per pair entry), and x5.7-7.8 with the
+  // plate stretched so that every particle yields (the return mapping's Newton iterations;
+  // docs/validation.md §6 "Cost model"). A body that yields for much of its run costs more (the
+  // notched specimen, which yields in 47 % of its particle-sub-steps, 2.3x its prediction); the
+  // initial state does not tell.
+  double johnson_cook_factor = 2.98;
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
   // continuity pass) against a kick-drift-kick one, water and contact phases: dam break,
   // 7 131 steps either way, user CPU 12.5 against 9.1 s (docs/validation.md §6).
