@@ -1,6 +1,7 @@
 #include "solid/elastic_substep.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <span>
 #include <utility>
 #include <variant>
@@ -13,6 +14,7 @@
 #include "solid/hourglass_control.h"
 #include "solid/stress_update.h"
 #include "solid/substep_levels.h"
+#include "solid/substep_pair_lanes.h"
 
 namespace slamsph {
 namespace {
@@ -74,11 +76,46 @@ bool wavefront_bounds(const SubstepLevels& lv, int t, long Q, std::vector<std::s
   return true;
 }
 
+// The ELL layout's blocks and masks (substep_pair_lanes.h) from the pair rows, and its
+// arrays sized: block b of particles [8b, 8b + 8) gets as many slots as its longest row.
+void ell_layout(const std::uint32_t* start, const std::uint32_t* index, std::size_t n,
+                SubstepEll& e) {
+  const std::size_t nb = (n + 7) / 8;
+  e.off.resize(nb + 1);
+  e.off[0] = 0;
+  e.mask.clear();
+  e.upper_mask.clear();
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::uint32_t deg[8] = {}, slots = 0;
+    for (std::size_t l = 0; l < 8 && 8 * b + l < n; ++l) {
+      deg[l] = start[8 * b + l + 1] - start[8 * b + l];
+      slots = std::max(slots, deg[l]);
+    }
+    for (std::uint32_t s = 0; s < slots; ++s) {
+      std::uint8_t m = 0, u = 0;
+      for (unsigned l = 0; l < 8; ++l)
+        if (deg[l] > s) {
+          m = static_cast<std::uint8_t>(m | (1u << l));
+          if (index[start[8 * b + l] + s] > 8 * b + l) u = static_cast<std::uint8_t>(u | (1u << l));
+        }
+      e.mask.push_back(m);
+      e.upper_mask.push_back(u);
+    }
+    e.off[b + 1] = e.off[b] + 8 * slots;
+  }
+  const std::size_t total = e.off[nb];
+  for (auto* v : {&e.g_x, &e.g_y, &e.X_x, &e.X_y, &e.kappa, &e.vw, &e.g_rev_x, &e.g_rev_y,
+                  &e.keps_x, &e.keps_y, &e.visc_fx, &e.visc_fy, &e.visc_q})
+    v->resize(total);
+  e.j.resize(total);
+  e.rev_pos.resize(total);
+}
+
 // kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;
 // kEulerian: body.eulerian.active (fixed per call, so the pair loops carry no test for them).
 template <class Law, bool kHourglass, bool kViscous, bool kEulerian>
 void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                   const Executor& exec, SubstepSchedule schedule) {
+                   const Executor& exec, SubstepSchedule schedule, SubstepPairLoop loop) {
   const std::size_t n = body.size();
   const SolidTopology& topo = body.topology;
   const SolidMaterial& mat = body.material;
@@ -154,6 +191,18 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // of the team (see there).
   w.power.resize(n * static_cast<std::size_t>(block > 0 ? block : threads));
   w.step_sums.resize(static_cast<std::size_t>(steps));
+  // Pass 2's pair loop in eight lanes (two-pass schedule; the set-up and pass 1 then write
+  // the pair records in the ELL layout, substep_pair_lanes.h).
+  const bool lanes =
+      block == 0 && !kEulerian && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available();
+  SubstepEll& ell = w.ell;
+  static const bool lanes1_env = !std::getenv("SLAMSPH_NO_PASS1_LANES");  // EXPERIMENT
+  const bool lanes1 = lanes && lanes1_env;
+  if (lanes) ell_layout(start, index, n, ell);
+  // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
+  auto ell_pos = [&](std::size_t i) -> std::uint32_t {
+    return ell.off[i >> 3] + static_cast<std::uint32_t>(i & 7);
+  };
   bool swapped = false;  // the current positions are in w.x_next
   int team_size = 1;     // two-pass schedule: the team's threads
   exec.run_team(threads, [&](const Team& team) {
@@ -206,14 +255,75 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         gs += grad0[k];
       }
       w.gsum[i] = gs;
+      if (lanes) {
+        const std::uint32_t pi = ell_pos(i);
+        const std::uint32_t slots = (ell.off[(i >> 3) + 1] - ell.off[i >> 3]) / 8;
+        for (std::uint32_t s = 0; s < slots; ++s) {
+          const std::uint32_t p = pi + 8 * s, k = start[i] + s;
+          if (k < start[i + 1]) {
+            const std::uint32_t j = index[k];
+            const SubstepPairRef& r = ref[k];
+            ell.g_x[p] = r.g.x;
+            ell.g_y[p] = r.g.y;
+            ell.X_x[p] = r.X.x;
+            ell.X_y[p] = r.X.y;
+            ell.kappa[p] = r.kappa;
+            ell.vw[p] = r.viscous_weight;
+            ell.g_rev_x[p] = grad0[reverse[k]].x;
+            ell.g_rev_y[p] = grad0[reverse[k]].y;
+            ell.j[p] = static_cast<std::int32_t>(j);
+            ell.rev_pos[p] = static_cast<std::int32_t>(ell_pos(j) + 8 * (reverse[k] - start[j]));
+          } else {  // past i's pairs: masked in the lanes, pointing at valid memory
+            ell.g_rev_x[p] = ell.g_rev_y[p] = 0.0;
+            ell.g_x[p] = ell.g_y[p] = ell.X_x[p] = ell.X_y[p] = ell.kappa[p] = ell.vw[p] = 0.0;
+            ell.j[p] = static_cast<std::int32_t>(i);
+            ell.rev_pos[p] = static_cast<std::int32_t>(p);
+          }
+        }
+      }
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, body.v[i], body.a[i], x, vh, x);
     };
+    // Pass 1's part after the pair loops (F and Ḟ by columns): the law, the stress power and
+    // V0 P.
+    auto pass1_law = [&](std::size_t i, const simd::Cols& Fc, const simd::Cols& Fdc)
+        __attribute__((always_inline)) {
+      const Mat2 F = simd::mat(Fc);
+      Mat2 Fdot = simd::mat(Fdc);
+      // The material's F and Ḟ: the kinematic ones above (the hourglass control below
+      // keeps the kinematic F) times the map C that keeps F continuous across a switch's
+      // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
+      // neighbours.
+      Mat2 Fm = F, K;
+      const bool switched = eulerian && body.eulerian.switched[i];
+      if constexpr (eulerian) {
+        if (switched) {
+          eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
+        } else {
+          Fm = F * body.F_rebase[i];
+          Fdot = Fdot * body.F_rebase[i];
+        }
+      }
+      const Mat2 F_old = Fb[i], P_old = Pb[i];
+      Fb[i] = Fm;
+      const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
+      Pb[i] = P;
+      if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
+      if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
+      // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
+      stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
+      SubstepParticleMats& mi = mats[i];
+      // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+      const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
+      simd::store(mi.vp_c0, VP.c0);
+      simd::store(mi.vp_c1, VP.c1);
+    };
     // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
     // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
     // rounding of the Vec2 / Mat2 forms.
-    auto pass1 = [&](std::size_t i) __attribute__((always_inline)) {
+    // kEll (a std::bool_constant): the pair records go to the ELL layout of the lanes.
+    auto pass1 = [&](std::size_t i, auto kEll) __attribute__((always_inline)) {
       simd::Cols Fc, Fdc;
       // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
       // its F comes from its current neighbours.
@@ -248,39 +358,22 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             f = s * xij;
             q = -0.5 * s * dot(xij, vij);
           }
-          visc[k] = {f, q};
-          visc[reverse[k]] = {-f, q};
+          if constexpr (decltype(kEll)::value) {
+            const std::uint32_t p = ell_pos(i) + 8 * (k - k0);
+            const auto rp = static_cast<std::uint32_t>(ell.rev_pos[p]);
+            ell.visc_fx[p] = f.x;
+            ell.visc_fy[p] = f.y;
+            ell.visc_q[p] = q;
+            ell.visc_fx[rp] = -f.x;
+            ell.visc_fy[rp] = -f.y;
+            ell.visc_q[rp] = q;
+          } else {
+            visc[k] = {f, q};
+            visc[reverse[k]] = {-f, q};
+          }
         }
       }
-      const Mat2 F = simd::mat(Fc);
-      Mat2 Fdot = simd::mat(Fdc);
-      // The material's F and Ḟ: the kinematic ones above (the hourglass control below
-      // keeps the kinematic F) times the map C that keeps F continuous across a switch's
-      // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
-      // neighbours.
-      Mat2 Fm = F, K;
-      const bool switched = eulerian && body.eulerian.switched[i];
-      if constexpr (eulerian) {
-        if (switched) {
-          eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
-        } else {
-          Fm = F * body.F_rebase[i];
-          Fdot = Fdot * body.F_rebase[i];
-        }
-      }
-      const Mat2 F_old = Fb[i], P_old = Pb[i];
-      Fb[i] = Fm;
-      const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-      Pb[i] = P;
-      if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
-      if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
-      // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
-      stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
-      SubstepParticleMats& mi = mats[i];
-      // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
-      const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
-      simd::store(mi.vp_c0, VP.c0);
-      simd::store(mi.vp_c1, VP.c1);
+      pass1_law(i, Fc, Fdc);
       if constexpr (kHourglass) {
         // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
         simd::Cols Gi;
@@ -289,11 +382,17 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
           const v2d keps =
               simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
-          simd::store(keps_k[k], keps);
+          if constexpr (decltype(kEll)::value) {
+            const std::uint32_t p = ell_pos(i) + 8 * (k - k0);
+            ell.keps_x[p] = keps[0];
+            ell.keps_y[p] = keps[1];
+          } else {
+            simd::store(keps_k[k], keps);
+          }
           simd::add_outer(Gi, keps, Xx, Xy);
         }
-        simd::store(mi.g_c0, Gi.c0);
-        simd::store(mi.g_c1, Gi.c1);
+        simd::store(mats[i].g_c0, Gi.c0);
+        simd::store(mats[i].g_c1, Gi.c1);
       }
     };
     // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
@@ -301,23 +400,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     // kick and drift (if `more`); i's powers into pw. The pair terms of i's own side,
     // V0_i P_i g_ij and G_i g_ij, are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum,
     // per call): the same forces at a different rounding (tests/unit/test_solid_substep.cpp).
-    auto pass2 = [&](std::size_t i, bool more, SubstepPower& pw) __attribute__((always_inline)) {
-      v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
-      double heat = 0.0;
-      for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-        const SubstepPairRev& r = rev[k];
-        const SubstepParticleMats& mj = mats[r.j];
-        const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
-        fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
-        if constexpr (kViscous) {
-          fav += simd::load(visc[k].f);
-          heat += visc[k].q;
-        }
-        if constexpr (kHourglass) {
-          grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
-          grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
-        }
-      }
+    // The tail after the pair sums (fs, grad, fav, heat: of the scalar loop below or of the
+    // lanes).
+    auto tail = [&](std::size_t i, bool more, SubstepPower& pw, v2d fs, v2d grad, v2d fav,
+                    double heat) __attribute__((always_inline)) {
       const SubstepParticleMats& mi = mats[i];
       const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
       // The tail in two-lane arithmetic as well (each lane rounds as the Vec2 form below it
@@ -356,6 +442,85 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         simd::store(xn[i], simd::load(x[i]) + simd::splat(h) * vn);
       }
     };
+    auto pass2 = [&](std::size_t i, bool more, SubstepPower& pw) __attribute__((always_inline)) {
+      v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
+      double heat = 0.0;
+      for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
+        const SubstepPairRev& r = rev[k];
+        const SubstepParticleMats& mj = mats[r.j];
+        const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
+        fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
+        if constexpr (kViscous) {
+          fav += simd::load(visc[k].f);
+          heat += visc[k].q;
+        }
+        if constexpr (kHourglass) {
+          grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
+          grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
+        }
+      }
+      tail(i, more, pw, fs, grad, fav, heat);
+    };
+    // Pass 2 of particles [i0, i1) in lanes: the pair sums of a chunk, then the tails.
+    const SubstepLaneData lane_data{
+        ell.off.data(),     ell.mask.data(),   ell.g_rev_x.data(),
+        ell.g_rev_y.data(), ell.j.data(),      ell.rev_pos.data(),
+        ell.keps_x.data(),  ell.keps_y.data(), ell.visc_fx.data(),
+        ell.visc_fy.data(), ell.visc_q.data(), reinterpret_cast<const double*>(mats),
+        kHourglass,         kViscous};
+    SubstepLaneSums sums;
+    // Pass 1 of particles [i0, i1) in lanes: the pair loops of a chunk, then per particle the
+    // law, the stress power, V0 P and G.
+    const SubstepLane1Data lane1_data{ell.off.data(),
+                                      ell.mask.data(),
+                                      ell.upper_mask.data(),
+                                      ell.g_x.data(),
+                                      ell.g_y.data(),
+                                      ell.X_x.data(),
+                                      ell.X_y.data(),
+                                      ell.kappa.data(),
+                                      ell.vw.data(),
+                                      ell.j.data(),
+                                      ell.rev_pos.data(),
+                                      reinterpret_cast<const double*>(x.data()),
+                                      reinterpret_cast<const double*>(vh.data()),
+                                      hp,
+                                      rho0,
+                                      c,
+                                      av_alpha,
+                                      av_beta,
+                                      ell.keps_x.data(),
+                                      ell.keps_y.data(),
+                                      ell.visc_fx.data(),
+                                      ell.visc_fy.data(),
+                                      ell.visc_q.data(),
+                                      kHourglass,
+                                      kViscous};
+    SubstepLane1Sums sums1;
+    auto pass1_lanes = [&](std::size_t base, std::size_t i0, std::size_t i1) {
+      substep_lanes_avx512_pass1(lane1_data, base, i0, i1, sums1);
+      for (std::size_t i = i0; i < i1; ++i) {
+        const std::size_t o = i - base;
+        // Columns: c0 = (xx, yx), c1 = (xy, yy).
+        const simd::Cols Fc{v2d{sums1.F[0][o], sums1.F[2][o]}, v2d{sums1.F[1][o], sums1.F[3][o]}};
+        const simd::Cols Fdc{v2d{sums1.Fd[0][o], sums1.Fd[2][o]},
+                             v2d{sums1.Fd[1][o], sums1.Fd[3][o]}};
+        pass1_law(i, Fc, Fdc);
+        if constexpr (kHourglass) {
+          mats[i].g_c0 = Vec2{sums1.G[0][o], sums1.G[2][o]};
+          mats[i].g_c1 = Vec2{sums1.G[1][o], sums1.G[3][o]};
+        }
+      }
+    };
+    auto pass2_lanes = [&](std::size_t base, std::size_t i0, std::size_t i1, bool more,
+                           SubstepPower* row) {
+      substep_lanes_avx512_pass2(lane_data, base, i0, i1, sums);
+      for (std::size_t i = i0; i < i1; ++i) {
+        const std::size_t o = i - base;
+        tail(i, more, row[i], v2d{sums.fs_x[o], sums.fs_y[o]}, v2d{sums.grad_x[o], sums.grad_y[o]},
+             v2d{sums.fav_x[o], sums.fav_y[o]}, sums.heat[o]);
+      }
+    };
     if (block == 0) {
       // Two passes over the team's share per sub-step, a barrier after each. The sums of the
       // powers run in particle order, a serial chain of n adds per sub-step; they are folded
@@ -372,36 +537,62 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       if (team.leader()) team_size = t;
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
-      for (int step = 0; step < steps; ++step) {
-        // The current pairs of the switched particles at the drifted positions.
-        if constexpr (eulerian) {
-          if (team.leader()) build_eulerian_pairs(body, x);
-          team.barrier();
-        }
-        for (std::size_t i = b; i < e; ++i) pass1(i);
-        team.barrier();
-        const bool more = step + 1 < steps;
-        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step % t) * n;
-        const int s = step - rank;  // the sub-step whose chain this thread continues
-        if (s >= 0) {
-          const SubstepPower* const sum_row = w.power.data() + static_cast<std::size_t>(s % t) * n;
-          SubstepPower& carry = w.step_sums[static_cast<std::size_t>(s)];
-          SubstepPower acc = rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;
-          for (std::size_t i = b; i < e; ++i) {
-            pass2(i, more, row[i]);
-            add_power(acc, sum_row[i], i);
+      // kEll: pass 2's pair sums in the lanes, chunk by chunk (then the chunk's tails and
+      // `after`, in particle order), pass 1 writing the ELL layout they read.
+      auto sub_steps = [&](auto kEll) {
+        auto pass2_share = [&](bool more, SubstepPower* row, auto&& after)
+            __attribute__((always_inline)) {
+          if constexpr (decltype(kEll)::value) {
+            for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk) {
+              const std::size_t i0 = std::max(b, c), i1 = std::min(e, c + kSubstepLaneChunk);
+              pass2_lanes(c, i0, i1, more, row);
+              for (std::size_t i = i0; i < i1; ++i) after(i);
+            }
+          } else {
+            for (std::size_t i = b; i < e; ++i) {
+              pass2(i, more, row[i]);
+              after(i);
+            }
           }
-          carry = acc;
-        } else {
-          for (std::size_t i = b; i < e; ++i) pass2(i, more, row[i]);
+        };
+        for (int step = 0; step < steps; ++step) {
+          // The current pairs of the switched particles at the drifted positions.
+          if constexpr (eulerian) {
+            if (team.leader()) build_eulerian_pairs(body, x);
+            team.barrier();
+          }
+          if (decltype(kEll)::value && lanes1) {
+            for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk)
+              pass1_lanes(c, std::max(b, c), std::min(e, c + kSubstepLaneChunk));
+          } else {
+            for (std::size_t i = b; i < e; ++i) pass1(i, kEll);
+          }
+          team.barrier();
+          const bool more = step + 1 < steps;
+          SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step % t) * n;
+          const int s = step - rank;  // the sub-step whose chain this thread continues
+          if (s >= 0) {
+            const SubstepPower* const sum_row =
+                w.power.data() + static_cast<std::size_t>(s % t) * n;
+            SubstepPower& carry = w.step_sums[static_cast<std::size_t>(s)];
+            SubstepPower acc = rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;
+            pass2_share(more, row, [&](std::size_t i) { add_power(acc, sum_row[i], i); });
+            carry = acc;
+          } else {
+            pass2_share(more, row, [](std::size_t) {});
+          }
+          team.barrier();
+          if (eulerian && more) {
+            std::swap(x, xn);
+            std::swap(vh, vhn);
+            if (team.leader()) swapped = !swapped;
+          }
         }
-        team.barrier();
-        if (eulerian && more) {
-          std::swap(x, xn);
-          std::swap(vh, vhn);
-          if (team.leader()) swapped = !swapped;
-        }
-      }
+      };
+      if (lanes)
+        sub_steps(std::true_type{});
+      else
+        sub_steps(std::false_type{});
       return;
     }
     // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
@@ -439,7 +630,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const long qq = q - first;
         const int step = s0 + static_cast<int>(qq / 2);
         if (qq % 2 == 0) {
-          for (; p != pe; ++p) pass1(*p);
+          for (; p != pe; ++p) pass1(*p, std::false_type{});
           return;
         }
         const bool more = step + 1 < steps;
@@ -534,31 +725,33 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
 
 template <class Law>
 void substeps_dispatch(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                       const Executor& exec, SubstepSchedule schedule) {
+                       const Executor& exec, SubstepSchedule schedule, SubstepPairLoop loop) {
   const SolidMaterial& mat = body.material;
   const bool hourglass = mat.hourglass != 0.0;
   const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
   const bool eulerian = body.eulerian.active;
   if (hourglass && viscous)
-    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec, schedule, loop);
   else if (hourglass)
-    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec, schedule, loop);
   else if (viscous)
-    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec, schedule, loop);
   else
-    eulerian ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec, schedule);
+    eulerian
+        ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec, schedule, loop)
+        : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec, schedule, loop);
 }
 
 }  // namespace
 
 void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
-                          SubstepSchedule schedule) {
-  std::visit([&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec, schedule); },
-             body.material.law);
+                          SubstepSchedule schedule, SubstepPairLoop loop) {
+  std::visit(
+      [&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec, schedule, loop); },
+      body.material.law);
 }
 
 }  // namespace slamsph

@@ -80,7 +80,13 @@ enum class SubstepSchedule { Auto, TwoPass, Wavefront };
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,
 // f_av, f_hg and the law's history at the end of the last sub-step and adds the sub-steps'
 // dissipated, hourglass and external work to the body's accumulators.
+// Pass 2's pair loop: Auto takes the eight lanes (solid/substep_pair_lanes.h) in the
+// two-pass schedule without an Eulerian switch where the CPU has AVX-512F, Scalar the scalar
+// loop always (tests: the same bits).
+enum class SubstepPairLoop { Auto, Scalar };
+
 void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
-                          SubstepSchedule schedule = SubstepSchedule::Auto);
+                          SubstepSchedule schedule = SubstepSchedule::Auto,
+                          SubstepPairLoop loop = SubstepPairLoop::Auto);
 
 }  // namespace slamsph
