@@ -109,6 +109,10 @@ void ell_layout(const std::uint32_t* start, const std::uint32_t* index, std::siz
     v->resize(total);
   e.j.resize(total);
   e.rev_pos.resize(total);
+  // The slots of the last block's lanes past n: partner 0 (the lanes read its row unmasked).
+  if (n % 8 != 0)
+    for (std::uint32_t p = e.off[nb - 1]; p < total; ++p)
+      if (p % 8 >= n % 8) e.j[p] = 0;
 }
 
 // kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;

@@ -49,14 +49,40 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
       const __mmask8 m = static_cast<__mmask8>(mk[s] & range);
       if (m == 0) break;
       const std::uint32_t p = p0 + 8 * s;
-      const __m256i j8 =
-          _mm256_slli_epi32(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(d.j + p)), 3);
       const __m512d gx = _mm512_loadu_pd(d.g_rev_x + p), gy = _mm512_loadu_pd(d.g_rev_y + p);
+      // j's 8 doubles (V0 P and G by columns), one row per lane, transposed: col[c] holds
+      // component c of the eight partners (a masked slot's j is its own particle).
+      __m512d col[8];
+      {
+        const std::int32_t* const jj = d.j + p;
+        __m512d r[8];
+        for (int l = 0; l < 8; ++l)
+          r[l] = _mm512_loadu_pd(d.mats + 8 * static_cast<std::size_t>(jj[l]));
+        __m512d t[8], u[8];
+        for (int l = 0; l < 8; l += 2) {
+          t[l] = _mm512_unpacklo_pd(r[l], r[l + 1]);
+          t[l + 1] = _mm512_unpackhi_pd(r[l], r[l + 1]);
+        }
+        // t[0]: (r0[0] r1[0]) (r0[2] r1[2]) (r0[4] r1[4]) (r0[6] r1[6]); t[1] likewise odd.
+        u[0] = _mm512_shuffle_f64x2(t[0], t[2], 0x88);  // cols 0, 4 of rows 0-3
+        u[1] = _mm512_shuffle_f64x2(t[0], t[2], 0xDD);  // cols 2, 6
+        u[2] = _mm512_shuffle_f64x2(t[1], t[3], 0x88);  // cols 1, 5
+        u[3] = _mm512_shuffle_f64x2(t[1], t[3], 0xDD);  // cols 3, 7
+        u[4] = _mm512_shuffle_f64x2(t[4], t[6], 0x88);  // the same of rows 4-7
+        u[5] = _mm512_shuffle_f64x2(t[4], t[6], 0xDD);
+        u[6] = _mm512_shuffle_f64x2(t[5], t[7], 0x88);
+        u[7] = _mm512_shuffle_f64x2(t[5], t[7], 0xDD);
+        col[0] = _mm512_shuffle_f64x2(u[0], u[4], 0x88);
+        col[4] = _mm512_shuffle_f64x2(u[0], u[4], 0xDD);
+        col[2] = _mm512_shuffle_f64x2(u[1], u[5], 0x88);
+        col[6] = _mm512_shuffle_f64x2(u[1], u[5], 0xDD);
+        col[1] = _mm512_shuffle_f64x2(u[2], u[6], 0x88);
+        col[5] = _mm512_shuffle_f64x2(u[2], u[6], 0xDD);
+        col[3] = _mm512_shuffle_f64x2(u[3], u[7], 0x88);
+        col[7] = _mm512_shuffle_f64x2(u[3], u[7], 0xDD);
+      }
       // fs += V0_j P_j g_ji, by components (vp_c0 = (xx, yx), vp_c1 = (xy, yy)).
-      const __m512d c0x = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 0, 8);
-      const __m512d c0y = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 1, 8);
-      const __m512d c1x = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 2, 8);
-      const __m512d c1y = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 3, 8);
+      const __m512d c0x = col[0], c0y = col[1], c1x = col[2], c1y = col[3];
       fs_x = _mm512_mask_add_pd(fs_x, m, fs_x, dot_slot(c0x, c1x, gx, gy));
       fs_y = _mm512_mask_add_pd(fs_y, m, fs_y, dot_slot(c0y, c1y, gx, gy));
       if constexpr (kViscous) {
@@ -66,10 +92,7 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
       }
       if constexpr (kHourglass) {
         // grad += G_j g_ji, then grad += κ ε_ij − κ ε_ji (two adds, as the scalar loop).
-        const __m512d g0x = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 4, 8);
-        const __m512d g0y = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 5, 8);
-        const __m512d g1x = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 6, 8);
-        const __m512d g1y = _mm512_mask_i32gather_pd(zero, m, j8, d.mats + 7, 8);
+        const __m512d g0x = col[4], g0y = col[5], g1x = col[6], g1y = col[7];
         grad_x = _mm512_mask_add_pd(grad_x, m, grad_x, dot_slot(g0x, g1x, gx, gy));
         grad_y = _mm512_mask_add_pd(grad_y, m, grad_y, dot_slot(g0y, g1y, gx, gy));
         const __m256i rp = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(d.rev_pos + p));
