@@ -78,13 +78,11 @@ bool wavefront_bounds(const SubstepLevels& lv, int t, long Q, std::vector<std::s
 
 // The ELL layout's blocks and masks (substep_pair_lanes.h) from the pair rows, and its
 // arrays sized: block b of particles [8b, 8b + 8) gets as many slots as its longest row.
-void ell_layout(const std::uint32_t* start, const std::uint32_t* index, std::size_t n,
-                SubstepEll& e) {
+void ell_layout(const std::uint32_t* start, std::size_t n, SubstepEll& e) {
   const std::size_t nb = (n + 7) / 8;
   e.off.resize(nb + 1);
   e.off[0] = 0;
   e.mask.clear();
-  e.upper_mask.clear();
   for (std::size_t b = 0; b < nb; ++b) {
     std::uint32_t deg[8] = {}, slots = 0;
     for (std::size_t l = 0; l < 8 && 8 * b + l < n; ++l) {
@@ -92,20 +90,18 @@ void ell_layout(const std::uint32_t* start, const std::uint32_t* index, std::siz
       slots = std::max(slots, deg[l]);
     }
     for (std::uint32_t s = 0; s < slots; ++s) {
-      std::uint8_t m = 0, u = 0;
+      std::uint8_t m = 0;
       for (unsigned l = 0; l < 8; ++l)
-        if (deg[l] > s) {
-          m = static_cast<std::uint8_t>(m | (1u << l));
-          if (index[start[8 * b + l] + s] > 8 * b + l) u = static_cast<std::uint8_t>(u | (1u << l));
-        }
+        if (deg[l] > s) m = static_cast<std::uint8_t>(m | (1u << l));
       e.mask.push_back(m);
-      e.upper_mask.push_back(u);
     }
     e.off[b + 1] = e.off[b] + 8 * slots;
   }
   const std::size_t total = e.off[nb];
-  for (auto* v : {&e.g_x, &e.g_y, &e.X_x, &e.X_y, &e.kappa, &e.vw, &e.g_rev_x, &e.g_rev_y,
-                  &e.keps_x, &e.keps_y, &e.visc_fx, &e.visc_fy, &e.visc_q})
+  e.fav.resize(n);
+  e.heat.resize(n);
+  for (auto* v : {&e.g_x, &e.g_y, &e.X_x, &e.X_y, &e.kappa, &e.vw, &e.h_pair, &e.rho_pair,
+                  &e.g_rev_x, &e.g_rev_y, &e.keps_x, &e.keps_y, &e.visc_fx, &e.visc_fy, &e.visc_q})
     v->resize(total);
   e.j.resize(total);
   e.rev_pos.resize(total);
@@ -202,7 +198,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   SubstepEll& ell = w.ell;
   static const bool lanes1_env = !std::getenv("SLAMSPH_NO_PASS1_LANES");  // EXPERIMENT
   const bool lanes1 = lanes && lanes1_env;
-  if (lanes) ell_layout(start, index, n, ell);
+  if (lanes) ell_layout(start, n, ell);
   // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
   auto ell_pos = [&](std::size_t i) -> std::uint32_t {
     return ell.off[i >> 3] + static_cast<std::uint32_t>(i & 7);
@@ -273,6 +269,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             ell.X_y[p] = r.X.y;
             ell.kappa[p] = r.kappa;
             ell.vw[p] = r.viscous_weight;
+            // monaghan_pi's h and ρ0 as pass 1 forms them.
+            ell.h_pair[p] = 0.5 * (topo.h[i] + topo.h[j]);
+            ell.rho_pair[p] = 0.5 * (body.rho0[i] + body.rho0[j]);
             ell.g_rev_x[p] = grad0[reverse[k]].x;
             ell.g_rev_y[p] = grad0[reverse[k]].y;
             ell.j[p] = static_cast<std::int32_t>(j);
@@ -280,6 +279,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           } else {  // past i's pairs: masked in the lanes, pointing at valid memory
             ell.g_rev_x[p] = ell.g_rev_y[p] = 0.0;
             ell.g_x[p] = ell.g_y[p] = ell.X_x[p] = ell.X_y[p] = ell.kappa[p] = ell.vw[p] = 0.0;
+            ell.h_pair[p] = ell.rho_pair[p] = 0.0;
             ell.j[p] = static_cast<std::int32_t>(i);
             ell.rev_pos[p] = static_cast<std::int32_t>(p);
           }
@@ -467,37 +467,33 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     };
     // Pass 2 of particles [i0, i1) in lanes: the pair sums of a chunk, then the tails.
     const SubstepLaneData lane_data{
-        ell.off.data(),     ell.mask.data(),   ell.g_rev_x.data(),
-        ell.g_rev_y.data(), ell.j.data(),      ell.rev_pos.data(),
-        ell.keps_x.data(),  ell.keps_y.data(), ell.visc_fx.data(),
-        ell.visc_fy.data(), ell.visc_q.data(), reinterpret_cast<const double*>(mats),
-        kHourglass,         kViscous};
+        ell.off.data(),     ell.mask.data(),    ell.g_rev_x.data(),
+        ell.g_rev_y.data(), ell.j.data(),       ell.rev_pos.data(),
+        ell.keps_x.data(),  ell.keps_y.data(),  ell.visc_fx.data(),
+        ell.visc_fy.data(), ell.visc_q.data(),  reinterpret_cast<const double*>(mats),
+        kHourglass,         kViscous && !lanes1};  // pass 1's lanes sum the viscous terms
     SubstepLaneSums sums;
     // Pass 1 of particles [i0, i1) in lanes: the pair loops of a chunk, then per particle the
     // law, the stress power, V0 P and G.
     const SubstepLane1Data lane1_data{ell.off.data(),
                                       ell.mask.data(),
-                                      ell.upper_mask.data(),
                                       ell.g_x.data(),
                                       ell.g_y.data(),
                                       ell.X_x.data(),
                                       ell.X_y.data(),
                                       ell.kappa.data(),
                                       ell.vw.data(),
+                                      ell.h_pair.data(),
+                                      ell.rho_pair.data(),
                                       ell.j.data(),
                                       ell.rev_pos.data(),
                                       reinterpret_cast<const double*>(x.data()),
                                       reinterpret_cast<const double*>(vh.data()),
-                                      hp,
-                                      rho0,
                                       c,
                                       av_alpha,
                                       av_beta,
                                       ell.keps_x.data(),
                                       ell.keps_y.data(),
-                                      ell.visc_fx.data(),
-                                      ell.visc_fy.data(),
-                                      ell.visc_q.data(),
                                       kHourglass,
                                       kViscous};
     SubstepLane1Sums sums1;
@@ -510,6 +506,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const simd::Cols Fdc{v2d{sums1.Fd[0][o], sums1.Fd[2][o]},
                              v2d{sums1.Fd[1][o], sums1.Fd[3][o]}};
         pass1_law(i, Fc, Fdc);
+        if constexpr (kViscous) {
+          ell.fav[i] = Vec2{sums1.fav_x[o], sums1.fav_y[o]};
+          ell.heat[i] = sums1.heat[o];
+        }
         if constexpr (kHourglass) {
           mats[i].g_c0 = Vec2{sums1.G[0][o], sums1.G[2][o]};
           mats[i].g_c1 = Vec2{sums1.G[1][o], sums1.G[3][o]};
@@ -521,8 +521,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       substep_lanes_avx512_pass2(lane_data, base, i0, i1, sums);
       for (std::size_t i = i0; i < i1; ++i) {
         const std::size_t o = i - base;
-        tail(i, more, row[i], v2d{sums.fs_x[o], sums.fs_y[o]}, v2d{sums.grad_x[o], sums.grad_y[o]},
-             v2d{sums.fav_x[o], sums.fav_y[o]}, sums.heat[o]);
+        const v2d fs{sums.fs_x[o], sums.fs_y[o]}, grad{sums.grad_x[o], sums.grad_y[o]};
+        if (kViscous && lanes1)
+          tail(i, more, row[i], fs, grad, simd::load(ell.fav[i]), ell.heat[i]);
+        else
+          tail(i, more, row[i], fs, grad, v2d{sums.fav_x[o], sums.fav_y[o]}, sums.heat[o]);
       }
     };
     if (block == 0) {

@@ -53,38 +53,37 @@ struct SubstepLaneSums {
 };
 
 // Pass 1's pair loops in the same lanes: F and Ḟ (Σ (x_j − x_i) ⊗ g_ij, Σ (v½_j − v½_i) ⊗
-// g_ij), the viscous pair terms of the pairs with j > i (written at the pair's and the
-// reverse pair's positions, the reverse force negated), then κ ε per pair and the hourglass
-// moment G = Σ κ ε ⊗ X_ij. The law, the stress power and V0 P stay scalar (the caller, per
-// particle, after each call).
+// g_ij), the sums of the viscous pair terms (every pair from i's side, so nothing is written
+// to j's slots: the sums pass 2 would form, bit for bit; substep_pair_lanes_avx512.cpp),
+// then κ ε per pair and the hourglass moment G = Σ κ ε ⊗ X_ij. The law, the stress power and
+// V0 P stay scalar (the caller, per particle, after each call).
 struct SubstepLane1Data {
   const std::uint32_t* off;
   const std::uint8_t* mask;
-  const std::uint8_t* upper_mask;  // per block and slot: the lanes whose s-th partner is j > i
-  const double* g_x;               // g_ij by components [1/m]
+  const double* g_x;  // g_ij by components [1/m]
   const double* g_y;
   const double* X_x;  // X_j − X_i [m]
   const double* X_y;
-  const double* kappa;  // κ_ij
-  const double* vw;     // |c_ij| of the viscous term [m]
+  const double* kappa;     // κ_ij
+  const double* vw;        // |c_ij| of the viscous term [m]
+  const double* h_pair;    // ½ (h_i + h_j) [m]
+  const double* rho_pair;  // ½ (ρ0_i + ρ0_j) [kg/m^3]
   const std::int32_t* j;
   const std::int32_t* rev_pos;
-  const double* x;     // positions, (x, y) per particle
-  const double* vh;    // half-step velocities, likewise
-  const double* h;     // per particle smoothing length [m]
-  const double* rho0;  // per particle reference density [kg/m^3]
+  const double* x;   // positions, (x, y) per particle
+  const double* vh;  // half-step velocities, likewise
   double c, av_alpha, av_beta;
   double* keps_x;  // out: κ ε per pair
   double* keps_y;
-  double* visc_fx;  // out: viscous force and heat per pair
-  double* visc_fy;
-  double* visc_q;
   bool hourglass, viscous;
 };
 
-// Pass 1's sums of a chunk by component, i at i − base: F, Ḟ and G (xx, xy, yx, yy).
+// Pass 1's sums of a chunk by component, i at i − base: F, Ḟ and G (xx, xy, yx, yy), the
+// viscous force and heat.
 struct SubstepLane1Sums {
   alignas(64) double F[4][kSubstepLaneChunk];
+  alignas(64) double fav_x[kSubstepLaneChunk], fav_y[kSubstepLaneChunk];
+  alignas(64) double heat[kSubstepLaneChunk];
   alignas(64) double Fd[4][kSubstepLaneChunk];
   alignas(64) double G[4][kSubstepLaneChunk];
 };

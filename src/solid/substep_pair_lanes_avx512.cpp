@@ -21,12 +21,6 @@ inline __mmask8 range_mask(std::size_t b8, std::size_t i0, std::size_t i1) {
   return static_cast<__mmask8>(((1u << hi) - 1u) & ~((1u << lo) - 1u));
 }
 
-// −a for every a, ±0 included (a sign flip, as the scalar unary minus).
-inline __m512d negate(__m512d a) {
-  return _mm512_castsi512_pd(
-      _mm512_xor_si512(_mm512_castpd_si512(a), _mm512_set1_epi64(INT64_MIN)));
-}
-
 // c0 gx + c1 gy: two products, then their sum (the scalar loop's rounding).
 inline __m512d dot_slot(__m512d c0, __m512d c1, __m512d gx, __m512d gy) {
   return _mm512_add_pd(_mm512_mul_pd(c0, gx), _mm512_mul_pd(c1, gy));
@@ -126,7 +120,7 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
   // Lane l's particle: its (x, y) at 2 (b8 + l) of x and vh.
   const __m256i lane2 = _mm256_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14);
   const __m512d nac = _mm512_set1_pd(-d.av_alpha * d.c), beta = _mm512_set1_pd(d.av_beta);
-  const __m512d half = _mm512_set1_pd(0.5), hundredth = _mm512_set1_pd(0.01);
+  const __m512d hundredth = _mm512_set1_pd(0.01);
   const __m512d mhalf = _mm512_set1_pd(-0.5);
   __m512d dxs[kMaxKeptSlots], dys[kMaxKeptSlots];
   for (std::size_t b8 = i0 & ~std::size_t{7}; b8 < i1; b8 += 8) {
@@ -135,17 +129,12 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
     const std::uint32_t p0 = d.off[blk];
     const std::uint32_t slots = (d.off[blk + 1] - p0) / 8;
     const std::uint8_t* const mk = d.mask + p0 / 8;
-    const std::uint8_t* const uk = d.upper_mask + p0 / 8;
     const __m256i i2 = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(2 * b8)), lane2);
     const __m512d xi_x = _mm512_mask_i32gather_pd(zero, range, i2, d.x, 8);
     const __m512d xi_y = _mm512_mask_i32gather_pd(zero, range, i2, d.x + 1, 8);
     const __m512d vi_x = _mm512_mask_i32gather_pd(zero, range, i2, d.vh, 8);
     const __m512d vi_y = _mm512_mask_i32gather_pd(zero, range, i2, d.vh + 1, 8);
-    __m512d hi_ = zero, rhoi = zero;
-    if constexpr (kViscous) {
-      hi_ = _mm512_maskz_loadu_pd(range, d.h + b8);
-      rhoi = _mm512_maskz_loadu_pd(range, d.rho0 + b8);
-    }
+    __m512d fav_x = zero, fav_y = zero, heat = zero;
     // F and Ḟ by components: F_ab += (x_j − x_i)_a g_b (add_outer's rounding).
     __m512d Fxx = zero, Fxy = zero, Fyx = zero, Fyy = zero;
     __m512d Dxx = zero, Dxy = zero, Dyx = zero, Dyy = zero;
@@ -177,43 +166,33 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
         dys[s] = dy;
       }
       if constexpr (kViscous) {
-        // viscous_force_on's pair term (monaghan_pi, artificial_viscosity.h) for the pairs
-        // with j > i, in its order of operations; +0 where Π = 0 (vx ≥ 0).
-        const __mmask8 mv = static_cast<__mmask8>(m & uk[s]);
-        if (mv != 0) {
-          const __m512d xij_x = _mm512_sub_pd(xi_x, xj_x), xij_y = _mm512_sub_pd(xi_y, xj_y);
-          const __m512d vij_x = _mm512_sub_pd(vi_x, vj_x), vij_y = _mm512_sub_pd(vi_y, vj_y);
-          const __m512d vx =
-              _mm512_add_pd(_mm512_mul_pd(vij_x, xij_x), _mm512_mul_pd(vij_y, xij_y));
-          const __m512d hj = _mm512_mask_i32gather_pd(zero, mv, j, d.h, 8);
-          const __m512d rhoj = _mm512_mask_i32gather_pd(zero, mv, j, d.rho0, 8);
-          const __m512d hm = _mm512_mul_pd(half, _mm512_add_pd(hi_, hj));
-          const __m512d rm = _mm512_mul_pd(half, _mm512_add_pd(rhoi, rhoj));
-          const __m512d r2 =
-              _mm512_add_pd(_mm512_mul_pd(xij_x, xij_x), _mm512_mul_pd(xij_y, xij_y));
-          const __m512d mu =
-              _mm512_div_pd(_mm512_mul_pd(hm, vx),
-                            _mm512_add_pd(r2, _mm512_mul_pd(_mm512_mul_pd(hundredth, hm), hm)));
-          const __m512d pi = _mm512_mul_pd(
-              rm,
-              _mm512_add_pd(_mm512_mul_pd(nac, mu), _mm512_mul_pd(_mm512_mul_pd(beta, mu), mu)));
-          // Π is returned where vx ≥ 0 is false (NaN included), then used where Π ≠ 0.
-          const __mmask8 act = _mm512_mask_cmp_pd_mask(mv, vx, zero, _CMP_NGE_UQ) &
-                               _mm512_cmp_pd_mask(pi, zero, _CMP_NEQ_UQ);
+        // viscous_force_on's pair term (monaghan_pi, artificial_viscosity.h) in its order of
+        // operations, for every pair from i's side (the scalar loop computes a pair once, at
+        // its lower particle, and gives j −f: x_ji = −x_ij and v_ji = −v_ij exactly, so the
+        // same Π and s, and s x_ji = −(s x_ij) exactly; where Π = 0 it stores +0 for i and −0
+        // for j, which add alike to a sum that starts at +0, never −0), summed in i's pair
+        // order as pass 2 sums the stored terms.
+        const __m512d xij_x = _mm512_sub_pd(xi_x, xj_x), xij_y = _mm512_sub_pd(xi_y, xj_y);
+        const __m512d vij_x = _mm512_sub_pd(vi_x, vj_x), vij_y = _mm512_sub_pd(vi_y, vj_y);
+        const __m512d vx = _mm512_add_pd(_mm512_mul_pd(vij_x, xij_x), _mm512_mul_pd(vij_y, xij_y));
+        const __m512d hm = _mm512_loadu_pd(d.h_pair + p), rm = _mm512_loadu_pd(d.rho_pair + p);
+        const __m512d r2 = _mm512_add_pd(_mm512_mul_pd(xij_x, xij_x), _mm512_mul_pd(xij_y, xij_y));
+        const __m512d mu =
+            _mm512_div_pd(_mm512_mul_pd(hm, vx),
+                          _mm512_add_pd(r2, _mm512_mul_pd(_mm512_mul_pd(hundredth, hm), hm)));
+        const __m512d pi = _mm512_mul_pd(
+            rm, _mm512_add_pd(_mm512_mul_pd(nac, mu), _mm512_mul_pd(_mm512_mul_pd(beta, mu), mu)));
+        // Π is returned where vx ≥ 0 is false (NaN included), then used where Π ≠ 0.
+        const __mmask8 act = _mm512_mask_cmp_pd_mask(m, vx, zero, _CMP_NGE_UQ) &
+                             _mm512_cmp_pd_mask(pi, zero, _CMP_NEQ_UQ);
+        if (act != 0) {
           const __m512d sc =
               _mm512_div_pd(_mm512_mul_pd(pi, _mm512_loadu_pd(d.vw + p)), _mm512_sqrt_pd(r2));
-          const __m512d fx = _mm512_maskz_mov_pd(act, _mm512_mul_pd(sc, xij_x));
-          const __m512d fy = _mm512_maskz_mov_pd(act, _mm512_mul_pd(sc, xij_y));
           const __m512d dxv =
               _mm512_add_pd(_mm512_mul_pd(xij_x, vij_x), _mm512_mul_pd(xij_y, vij_y));
-          const __m512d q = _mm512_maskz_mov_pd(act, _mm512_mul_pd(_mm512_mul_pd(mhalf, sc), dxv));
-          _mm512_mask_storeu_pd(d.visc_fx + p, mv, fx);
-          _mm512_mask_storeu_pd(d.visc_fy + p, mv, fy);
-          _mm512_mask_storeu_pd(d.visc_q + p, mv, q);
-          const __m256i rp = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(d.rev_pos + p));
-          _mm512_mask_i32scatter_pd(d.visc_fx, mv, rp, negate(fx), 8);
-          _mm512_mask_i32scatter_pd(d.visc_fy, mv, rp, negate(fy), 8);
-          _mm512_mask_i32scatter_pd(d.visc_q, mv, rp, q, 8);
+          fav_x = _mm512_mask_add_pd(fav_x, act, fav_x, _mm512_mul_pd(sc, xij_x));
+          fav_y = _mm512_mask_add_pd(fav_y, act, fav_y, _mm512_mul_pd(sc, xij_y));
+          heat = _mm512_mask_add_pd(heat, act, heat, _mm512_mul_pd(_mm512_mul_pd(mhalf, sc), dxv));
         }
       }
     }
@@ -226,6 +205,9 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
     _mm512_mask_storeu_pd(out.Fd[1] + o, range, Dxy);
     _mm512_mask_storeu_pd(out.Fd[2] + o, range, Dyx);
     _mm512_mask_storeu_pd(out.Fd[3] + o, range, Dyy);
+    _mm512_mask_storeu_pd(out.fav_x + o, range, fav_x);
+    _mm512_mask_storeu_pd(out.fav_y + o, range, fav_y);
+    _mm512_mask_storeu_pd(out.heat + o, range, heat);
     if constexpr (kHourglass) {
       // hourglass_moment: κ ε = κ (F X_ij − (x_j − x_i)) (simd::mul's rounding), G += κ ε ⊗ X.
       __m512d Gxx = zero, Gxy = zero, Gyx = zero, Gyy = zero;

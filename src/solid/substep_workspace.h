@@ -55,13 +55,16 @@ struct SubstepPower {
 // pair constants, g_rev_*, j, rev_pos (the set-up); per sub-step: keps_*, visc_* (pass 1,
 // instead of keps and viscous).
 struct SubstepEll {
-  std::vector<std::uint32_t> off;        // per block of eight particles, and the total at the end
-  std::vector<std::uint8_t> mask;        // per block and slot: the lanes with an s-th pair
-  std::vector<std::uint8_t> upper_mask;  // ... whose s-th partner j is > i
+  std::vector<std::uint32_t> off;  // per block of eight particles, and the total at the end
+  std::vector<std::uint8_t> mask;  // per block and slot: the lanes with an s-th pair
   std::vector<double> g_x, g_y, X_x, X_y, kappa, vw;  // pass 1's (SubstepPairRef)
+  std::vector<double> h_pair, rho_pair;               // ½ (h_i + h_j), ½ (ρ0_i + ρ0_j)
   std::vector<double> g_rev_x, g_rev_y;
   std::vector<std::int32_t> j, rev_pos;
   std::vector<double> keps_x, keps_y, visc_fx, visc_fy, visc_q;
+  // Per particle, pass 1 in lanes: the sums of the viscous pair terms for pass 2.
+  std::vector<Vec2> fav;
+  std::vector<double> heat;
 };
 
 struct SubstepWorkspace {
