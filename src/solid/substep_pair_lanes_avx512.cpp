@@ -109,6 +109,22 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
   }
 }
 
+// The (x, y) pairs at 2 j[l] of `a` for the eight lanes, as x and y vectors (loads of the
+// rows and two permutations instead of two gathers; every j is a valid particle).
+inline void pairs_by_component(const double* a, const std::int32_t* j, __m512d& x, __m512d& y) {
+  auto row = [&](int l) { return _mm_loadu_pd(a + 2 * static_cast<std::size_t>(j[l])); };
+  auto four = [&](int l) {
+    __m512 v = _mm512_castpd_ps(_mm512_castpd128_pd512(row(l)));
+    v = _mm512_insertf32x4(v, _mm_castpd_ps(row(l + 1)), 1);
+    v = _mm512_insertf32x4(v, _mm_castpd_ps(row(l + 2)), 2);
+    v = _mm512_insertf32x4(v, _mm_castpd_ps(row(l + 3)), 3);
+    return _mm512_castps_pd(v);
+  };
+  const __m512d lo = four(0), hi = four(4);  // (x0 y0 x1 y1 x2 y2 x3 y3), lanes 4-7
+  x = _mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), hi);
+  y = _mm512_permutex2var_pd(lo, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), hi);
+}
+
 // Up to this many slots per block keep x_j − x_i for the hourglass loop; a block with more
 // gathers x_j again.
 constexpr std::uint32_t kMaxKeptSlots = 32;
@@ -144,12 +160,9 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
       if (m == 0) break;
       used = s + 1;
       const std::uint32_t p = p0 + 8 * s;
-      const __m256i j = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(d.j + p));
-      const __m256i j2 = _mm256_slli_epi32(j, 1);
-      const __m512d xj_x = _mm512_mask_i32gather_pd(zero, m, j2, d.x, 8);
-      const __m512d xj_y = _mm512_mask_i32gather_pd(zero, m, j2, d.x + 1, 8);
-      const __m512d vj_x = _mm512_mask_i32gather_pd(zero, m, j2, d.vh, 8);
-      const __m512d vj_y = _mm512_mask_i32gather_pd(zero, m, j2, d.vh + 1, 8);
+      __m512d xj_x, xj_y, vj_x, vj_y;
+      pairs_by_component(d.x, d.j + p, xj_x, xj_y);
+      pairs_by_component(d.vh, d.j + p, vj_x, vj_y);
       const __m512d gx = _mm512_loadu_pd(d.g_x + p), gy = _mm512_loadu_pd(d.g_y + p);
       const __m512d dx = _mm512_sub_pd(xj_x, xi_x), dy = _mm512_sub_pd(xj_y, xi_y);
       const __m512d dvx = _mm512_sub_pd(vj_x, vi_x), dvy = _mm512_sub_pd(vj_y, vi_y);
