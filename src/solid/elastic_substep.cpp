@@ -1,7 +1,6 @@
 #include "solid/elastic_substep.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <span>
 #include <utility>
 #include <variant>
@@ -101,7 +100,7 @@ void ell_layout(const std::uint32_t* start, std::size_t n, SubstepEll& e) {
   e.fav.resize(n);
   e.heat.resize(n);
   for (auto* v : {&e.g_x, &e.g_y, &e.X_x, &e.X_y, &e.kappa, &e.vw, &e.h_pair, &e.rho_pair,
-                  &e.g_rev_x, &e.g_rev_y, &e.keps_x, &e.keps_y, &e.visc_fx, &e.visc_fy, &e.visc_q})
+                  &e.g_rev_x, &e.g_rev_y, &e.keps_x, &e.keps_y})
     v->resize(total);
   e.j.resize(total);
   e.rev_pos.resize(total);
@@ -196,8 +195,6 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   const bool lanes =
       block == 0 && !kEulerian && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available();
   SubstepEll& ell = w.ell;
-  static const bool lanes1_env = !std::getenv("SLAMSPH_NO_PASS1_LANES");  // EXPERIMENT
-  const bool lanes1 = lanes && lanes1_env;
   if (lanes) ell_layout(start, n, ell);
   // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
   auto ell_pos = [&](std::size_t i) -> std::uint32_t {
@@ -326,8 +323,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
     // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
     // rounding of the Vec2 / Mat2 forms.
-    // kEll (a std::bool_constant): the pair records go to the ELL layout of the lanes.
-    auto pass1 = [&](std::size_t i, auto kEll) __attribute__((always_inline)) {
+    auto pass1 = [&](std::size_t i) __attribute__((always_inline)) {
       simd::Cols Fc, Fdc;
       // A switched particle has no total-Lagrangian pairs left (its loops below are empty):
       // its F comes from its current neighbours.
@@ -362,19 +358,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             f = s * xij;
             q = -0.5 * s * dot(xij, vij);
           }
-          if constexpr (decltype(kEll)::value) {
-            const std::uint32_t p = ell_pos(i) + 8 * (k - k0);
-            const auto rp = static_cast<std::uint32_t>(ell.rev_pos[p]);
-            ell.visc_fx[p] = f.x;
-            ell.visc_fy[p] = f.y;
-            ell.visc_q[p] = q;
-            ell.visc_fx[rp] = -f.x;
-            ell.visc_fy[rp] = -f.y;
-            ell.visc_q[rp] = q;
-          } else {
-            visc[k] = {f, q};
-            visc[reverse[k]] = {-f, q};
-          }
+          visc[k] = {f, q};
+          visc[reverse[k]] = {-f, q};
         }
       }
       pass1_law(i, Fc, Fdc);
@@ -386,13 +371,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           const v2d Xij = simd::load(r.X), Xx = lo(Xij), Xy = hi(Xij);
           const v2d keps =
               simd::splat(r.kappa) * (simd::mul(Fc, Xx, Xy) - (simd::load(x[index[k]]) - xi));
-          if constexpr (decltype(kEll)::value) {
-            const std::uint32_t p = ell_pos(i) + 8 * (k - k0);
-            ell.keps_x[p] = keps[0];
-            ell.keps_y[p] = keps[1];
-          } else {
-            simd::store(keps_k[k], keps);
-          }
+          simd::store(keps_k[k], keps);
           simd::add_outer(Gi, keps, Xx, Xy);
         }
         simd::store(mats[i].g_c0, Gi.c0);
@@ -467,11 +446,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     };
     // Pass 2 of particles [i0, i1) in lanes: the pair sums of a chunk, then the tails.
     const SubstepLaneData lane_data{
-        ell.off.data(),     ell.mask.data(),    ell.g_rev_x.data(),
-        ell.g_rev_y.data(), ell.j.data(),       ell.rev_pos.data(),
-        ell.keps_x.data(),  ell.keps_y.data(),  ell.visc_fx.data(),
-        ell.visc_fy.data(), ell.visc_q.data(),  reinterpret_cast<const double*>(mats),
-        kHourglass,         kViscous && !lanes1};  // pass 1's lanes sum the viscous terms
+        ell.off.data(),     ell.mask.data(),   ell.g_rev_x.data(),
+        ell.g_rev_y.data(), ell.j.data(),      ell.rev_pos.data(),
+        ell.keps_x.data(),  ell.keps_y.data(), reinterpret_cast<const double*>(mats),
+        kHourglass};
     SubstepLaneSums sums;
     // Pass 1 of particles [i0, i1) in lanes: the pair loops of a chunk, then per particle the
     // law, the stress power, V0 P and G.
@@ -521,11 +499,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       substep_lanes_avx512_pass2(lane_data, base, i0, i1, sums);
       for (std::size_t i = i0; i < i1; ++i) {
         const std::size_t o = i - base;
-        const v2d fs{sums.fs_x[o], sums.fs_y[o]}, grad{sums.grad_x[o], sums.grad_y[o]};
-        if (kViscous && lanes1)
-          tail(i, more, row[i], fs, grad, simd::load(ell.fav[i]), ell.heat[i]);
-        else
-          tail(i, more, row[i], fs, grad, v2d{sums.fav_x[o], sums.fav_y[o]}, sums.heat[o]);
+        // The viscous sums come from pass 1's lanes (zero without viscosity).
+        tail(i, more, row[i], v2d{sums.fs_x[o], sums.fs_y[o]}, v2d{sums.grad_x[o], sums.grad_y[o]},
+             kViscous ? simd::load(ell.fav[i]) : v2d{0.0, 0.0}, kViscous ? ell.heat[i] : 0.0);
       }
     };
     if (block == 0) {
@@ -544,12 +520,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       if (team.leader()) team_size = t;
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
-      // kEll: pass 2's pair sums in the lanes, chunk by chunk (then the chunk's tails and
-      // `after`, in particle order), pass 1 writing the ELL layout they read.
-      auto sub_steps = [&](auto kEll) {
+      // kLanes (a std::bool_constant): both passes' pair loops in the lanes, chunk by chunk
+      // (pass 2: then the chunk's tails and `after`, in particle order).
+      auto sub_steps = [&](auto kLanes) {
         auto pass2_share = [&](bool more, SubstepPower* row, auto&& after)
             __attribute__((always_inline)) {
-          if constexpr (decltype(kEll)::value) {
+          if constexpr (decltype(kLanes)::value) {
             for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk) {
               const std::size_t i0 = std::max(b, c), i1 = std::min(e, c + kSubstepLaneChunk);
               pass2_lanes(c, i0, i1, more, row);
@@ -568,11 +544,11 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             if (team.leader()) build_eulerian_pairs(body, x);
             team.barrier();
           }
-          if (decltype(kEll)::value && lanes1) {
+          if constexpr (decltype(kLanes)::value) {
             for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk)
               pass1_lanes(c, std::max(b, c), std::min(e, c + kSubstepLaneChunk));
           } else {
-            for (std::size_t i = b; i < e; ++i) pass1(i, kEll);
+            for (std::size_t i = b; i < e; ++i) pass1(i);
           }
           team.barrier();
           const bool more = step + 1 < steps;
@@ -637,7 +613,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         const long qq = q - first;
         const int step = s0 + static_cast<int>(qq / 2);
         if (qq % 2 == 0) {
-          for (; p != pe; ++p) pass1(*p, std::false_type{});
+          for (; p != pe; ++p) pass1(*p);
           return;
         }
         const bool more = step + 1 < steps;

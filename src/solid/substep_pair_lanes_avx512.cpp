@@ -26,7 +26,7 @@ inline __m512d dot_slot(__m512d c0, __m512d c1, __m512d gx, __m512d gy) {
   return _mm512_add_pd(_mm512_mul_pd(c0, gx), _mm512_mul_pd(c1, gy));
 }
 
-template <bool kHourglass, bool kViscous>
+template <bool kHourglass>
 void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::size_t i1,
                SubstepLaneSums& out) {
   const __m512d zero = _mm512_setzero_pd();
@@ -37,7 +37,6 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
     const std::uint32_t slots = (d.off[blk + 1] - p0) / 8;
     const std::uint8_t* const mk = d.mask + p0 / 8;
     __m512d fs_x = zero, fs_y = zero, grad_x = zero, grad_y = zero;
-    __m512d fav_x = zero, fav_y = zero, heat = zero;
     for (std::uint32_t s = 0; s < slots; ++s) {
       // Lanes whose particle has an s-th pair (fewer with every slot: none left, none later).
       const __mmask8 m = static_cast<__mmask8>(mk[s] & range);
@@ -79,11 +78,6 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
       const __m512d c0x = col[0], c0y = col[1], c1x = col[2], c1y = col[3];
       fs_x = _mm512_mask_add_pd(fs_x, m, fs_x, dot_slot(c0x, c1x, gx, gy));
       fs_y = _mm512_mask_add_pd(fs_y, m, fs_y, dot_slot(c0y, c1y, gx, gy));
-      if constexpr (kViscous) {
-        fav_x = _mm512_mask_add_pd(fav_x, m, fav_x, _mm512_loadu_pd(d.visc_fx + p));
-        fav_y = _mm512_mask_add_pd(fav_y, m, fav_y, _mm512_loadu_pd(d.visc_fy + p));
-        heat = _mm512_mask_add_pd(heat, m, heat, _mm512_loadu_pd(d.visc_q + p));
-      }
       if constexpr (kHourglass) {
         // grad += G_j g_ji, then grad += κ ε_ij − κ ε_ji (two adds, as the scalar loop).
         const __m512d g0x = col[4], g0y = col[5], g1x = col[6], g1y = col[7];
@@ -103,9 +97,6 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
     _mm512_mask_storeu_pd(out.fs_y + o, range, fs_y);
     _mm512_mask_storeu_pd(out.grad_x + o, range, grad_x);
     _mm512_mask_storeu_pd(out.grad_y + o, range, grad_y);
-    _mm512_mask_storeu_pd(out.fav_x + o, range, fav_x);
-    _mm512_mask_storeu_pd(out.fav_y + o, range, fav_y);
-    _mm512_mask_storeu_pd(out.heat + o, range, heat);
   }
 }
 
@@ -276,12 +267,7 @@ void substep_lanes_avx512_pass1(const SubstepLane1Data& d, std::size_t base, std
 
 void substep_lanes_avx512_pass2(const SubstepLaneData& d, std::size_t base, std::size_t i0,
                                 std::size_t i1, SubstepLaneSums& out) {
-  if (d.hourglass)
-    d.viscous ? pair_sums<true, true>(d, base, i0, i1, out)
-              : pair_sums<true, false>(d, base, i0, i1, out);
-  else
-    d.viscous ? pair_sums<false, true>(d, base, i0, i1, out)
-              : pair_sums<false, false>(d, base, i0, i1, out);
+  d.hourglass ? pair_sums<true>(d, base, i0, i1, out) : pair_sums<false>(d, base, i0, i1, out);
 }
 
 }  // namespace slamsph

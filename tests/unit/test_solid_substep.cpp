@@ -367,13 +367,14 @@ TEST(ElasticSubstep, TwoPassPowerRowsPerThreadBitIdentical) {
   }
 }
 
-// Pass 2's pair sums in eight lanes (solid/substep_pair_lanes.h; the two-pass schedule's
-// default where the CPU has AVX-512F) against the scalar loop: the same bits, energy
-// accumulators included, on the loaded, clamped ring (rows of 5–12 pairs: slots masked in
-// most blocks) and on a block, with every on/off state of hourglass control and viscosity
-// (four instances of the lanes), SVK and J2, 1, 2 and 3 threads (team shares that split the
-// blocks of eight), calls of 7, 1 and 6 sub-steps. On a CPU without AVX-512F both runs take
-// the scalar loop (the test then passes trivially; it says so).
+// Both passes' pair loops in eight lanes (solid/substep_pair_lanes.h; the two-pass
+// schedule's default where the CPU has AVX-512F) against the scalar loops: the same bits,
+// energy accumulators included, on the loaded, clamped ring (3 220 particles, 3–5 pairs
+// each: masked slots in 26 of its 403 blocks of eight, the last block half empty) and on a
+// block, with every on/off state of hourglass control and viscosity (four instances of the
+// lanes), SVK and J2, 1, 2 and 3 threads (team shares that split the blocks of eight),
+// calls of 7, 1 and 6 sub-steps. On a CPU without AVX-512F both runs take the scalar loops
+// (the test then passes trivially; it says so).
 namespace {
 void expect_lanes_match_scalar(const SolidBody& body) {
   const double h = 0.5 * stable_time_step(body);
