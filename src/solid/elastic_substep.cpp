@@ -112,7 +112,9 @@ void ell_layout(const std::uint32_t* start, std::size_t n, SubstepEll& e) {
 
 // kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;
 // kEulerian: body.eulerian.active (fixed per call, so the pair loops carry no test for them).
-template <class Law, bool kHourglass, bool kViscous, bool kEulerian>
+// kLanes: the two-pass schedule with the pair loops in lanes (substep_pair_lanes.h), an
+// instance of its own, entered from the scalar one.
+template <class Law, bool kHourglass, bool kViscous, bool kEulerian, bool kLanes = false>
 void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
                    const Executor& exec, SubstepSchedule schedule, SubstepPairLoop loop) {
   const std::size_t n = body.size();
@@ -185,15 +187,24 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::v2d;
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   // Sub-steps per block of the wavefront schedule, 0 for the two-pass one.
-  const int block = kEulerian ? 0 : wavefront_block(body, steps, schedule);
+  const int block = kEulerian || kLanes ? 0 : wavefront_block(body, steps, schedule);
+  // Both passes' pair loops in eight lanes (two-pass schedule; the set-up then writes the
+  // pair records in the ELL layout too, substep_pair_lanes.h) in their own instance: in this
+  // one, a function of the scalar loops' size, GCC keeps inlining the law and the small
+  // helpers (with both in one function, 7 % more instructions ran in the scalar loops). The
+  // lines above are idempotent.
+  if constexpr (!kEulerian && !kLanes) {
+    if (block == 0 && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available()) {
+      substeps_with<Law, kHourglass, kViscous, false, true>(law, body, steps, h, g, exec,
+                                                            SubstepSchedule::TwoPass, loop);
+      return;
+    }
+  }
+  constexpr bool lanes = kLanes;
   // Power rows: one per sub-step of a wavefront block, or, two-pass schedule, one per thread
   // of the team (see there).
   w.power.resize(n * static_cast<std::size_t>(block > 0 ? block : threads));
   w.step_sums.resize(static_cast<std::size_t>(steps));
-  // Pass 2's pair loop in eight lanes (two-pass schedule; the set-up and pass 1 then write
-  // the pair records in the ELL layout, substep_pair_lanes.h).
-  const bool lanes =
-      block == 0 && !kEulerian && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available();
   SubstepEll& ell = w.ell;
   if (lanes) ell_layout(start, n, ell);
   // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
@@ -520,12 +531,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       if (team.leader()) team_size = t;
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
-      // kLanes (a std::bool_constant): both passes' pair loops in the lanes, chunk by chunk
-      // (pass 2: then the chunk's tails and `after`, in particle order).
-      auto sub_steps = [&](auto kLanes) {
+      // kLanes: both passes' pair loops in the lanes, chunk by chunk (pass 2: then the
+      // chunk's tails and `after`, in particle order).
+      auto sub_steps = [&]() {
         auto pass2_share = [&](bool more, SubstepPower* row, auto&& after)
             __attribute__((always_inline)) {
-          if constexpr (decltype(kLanes)::value) {
+          if constexpr (kLanes) {
             for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk) {
               const std::size_t i0 = std::max(b, c), i1 = std::min(e, c + kSubstepLaneChunk);
               pass2_lanes(c, i0, i1, more, row);
@@ -544,7 +555,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
             if (team.leader()) build_eulerian_pairs(body, x);
             team.barrier();
           }
-          if constexpr (decltype(kLanes)::value) {
+          if constexpr (kLanes) {
             for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk)
               pass1_lanes(c, std::max(b, c), std::min(e, c + kSubstepLaneChunk));
           } else {
@@ -572,118 +583,117 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           }
         }
       };
-      if (lanes)
-        sub_steps(std::true_type{});
-      else
-        sub_steps(std::false_type{});
+      sub_steps();
       return;
     }
-    // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
-    // sub-steps in blocks of `block`, each block a sequence of Q phases (the set-up in the
-    // first block, then pass 1 and pass 2 of each sub-step). Phase q of level l needs phase
-    // q - 1 of levels l - 1, l and l + 1 (pass 1 reads the neighbours' x and v½ of the last
-    // pass 2; pass 2 reads their V0 P, G, κ ε and viscous terms of pass 1 and overwrites x
-    // and v½ in place, which those neighbours' pass 1 has read) and nothing else, so phase q
-    // of level l may run once phase q - 1 of levels l - 1 .. l + 1 is done and before phase
-    // q + 1 of any of them. Each thread runs the tasks (l, q) of its chunk of levels
-    // [lo, hi) that depend on its chunk only (l + q < hi unless the last chunk, l − q ≥ lo
-    // unless the first), in order of l + q then q: at any moment the working set is ~Q
-    // levels, which stay in the core's cache over the block's sub-steps instead of the whole
-    // body being streamed twice per sub-step. After a barrier each thread but the last
-    // finishes the seam at its chunk's upper end (levels [hi − q, hi + q) of phase q), which
-    // needs both chunks. Each particle's arithmetic is that of the two-pass schedule; the
-    // powers of the energy bookkeeping go to one row per sub-step and are summed in particle
-    // order after the block, so nothing depends on the schedule or the thread count.
-    const std::uint32_t* const order = w.levels.order.data();
-    const std::uint32_t* const lstart = w.levels.start.data();
-    const long m_lv = static_cast<long>(w.levels.levels());
-    const int rank = team.rank(), t = team.size();
-    std::vector<std::size_t> B(static_cast<std::size_t>(t) + 1);
-    for (int s0 = 0; s0 < steps; s0 += block) {
-      const int s1 = std::min(steps, s0 + block);
-      const int first = s0 == 0 ? 1 : 0;  // the set-up is phase 0 of the first block
-      const long Q = 2 * (s1 - s0) + first;
-      auto run = [&](long l, long q) __attribute__((always_inline)) {
-        const std::uint32_t* p = order + lstart[l];
-        const std::uint32_t* const pe = order + lstart[l + 1];
-        if (q < first) {
-          for (; p != pe; ++p) setup(*p);
-          return;
-        }
-        const long qq = q - first;
-        const int step = s0 + static_cast<int>(qq / 2);
-        if (qq % 2 == 0) {
-          for (; p != pe; ++p) pass1(*p);
-          return;
-        }
-        const bool more = step + 1 < steps;
-        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step - s0) * n;
-        for (; p != pe; ++p) pass2(*p, more, row[p - order]);
-      };
-      if (!wavefront_bounds(w.levels, t, Q, B)) {
-        // A chunk too narrow for its seams (a short body on several threads): phase by phase,
-        // each thread a contiguous share of the levels, a barrier after each phase.
-        const long lo = m_lv * rank / t, hi = m_lv * (rank + 1) / t;
-        for (long q = 0; q < Q; ++q) {
-          for (long l = lo; l < hi; ++l) run(l, q);
+    if constexpr (!kLanes) {
+      // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
+      // sub-steps in blocks of `block`, each block a sequence of Q phases (the set-up in the
+      // first block, then pass 1 and pass 2 of each sub-step). Phase q of level l needs phase
+      // q - 1 of levels l - 1, l and l + 1 (pass 1 reads the neighbours' x and v½ of the last
+      // pass 2; pass 2 reads their V0 P, G, κ ε and viscous terms of pass 1 and overwrites x
+      // and v½ in place, which those neighbours' pass 1 has read) and nothing else, so phase q
+      // of level l may run once phase q - 1 of levels l - 1 .. l + 1 is done and before phase
+      // q + 1 of any of them. Each thread runs the tasks (l, q) of its chunk of levels
+      // [lo, hi) that depend on its chunk only (l + q < hi unless the last chunk, l − q ≥ lo
+      // unless the first), in order of l + q then q: at any moment the working set is ~Q
+      // levels, which stay in the core's cache over the block's sub-steps instead of the whole
+      // body being streamed twice per sub-step. After a barrier each thread but the last
+      // finishes the seam at its chunk's upper end (levels [hi − q, hi + q) of phase q), which
+      // needs both chunks. Each particle's arithmetic is that of the two-pass schedule; the
+      // powers of the energy bookkeeping go to one row per sub-step and are summed in particle
+      // order after the block, so nothing depends on the schedule or the thread count.
+      const std::uint32_t* const order = w.levels.order.data();
+      const std::uint32_t* const lstart = w.levels.start.data();
+      const long m_lv = static_cast<long>(w.levels.levels());
+      const int rank = team.rank(), t = team.size();
+      std::vector<std::size_t> B(static_cast<std::size_t>(t) + 1);
+      for (int s0 = 0; s0 < steps; s0 += block) {
+        const int s1 = std::min(steps, s0 + block);
+        const int first = s0 == 0 ? 1 : 0;  // the set-up is phase 0 of the first block
+        const long Q = 2 * (s1 - s0) + first;
+        auto run = [&](long l, long q) __attribute__((always_inline)) {
+          const std::uint32_t* p = order + lstart[l];
+          const std::uint32_t* const pe = order + lstart[l + 1];
+          if (q < first) {
+            for (; p != pe; ++p) setup(*p);
+            return;
+          }
+          const long qq = q - first;
+          const int step = s0 + static_cast<int>(qq / 2);
+          if (qq % 2 == 0) {
+            for (; p != pe; ++p) pass1(*p);
+            return;
+          }
+          const bool more = step + 1 < steps;
+          SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step - s0) * n;
+          for (; p != pe; ++p) pass2(*p, more, row[p - order]);
+        };
+        if (!wavefront_bounds(w.levels, t, Q, B)) {
+          // A chunk too narrow for its seams (a short body on several threads): phase by phase,
+          // each thread a contiguous share of the levels, a barrier after each phase.
+          const long lo = m_lv * rank / t, hi = m_lv * (rank + 1) / t;
+          for (long q = 0; q < Q; ++q) {
+            for (long l = lo; l < hi; ++l) run(l, q);
+            team.barrier();
+          }
+        } else {
+          // Level l's data is read from memory for the block's first phase of l, in an order
+          // the hardware prefetchers do not follow (each level is ~2 × layers runs of the stored
+          // order): the lines are requested ahead.
+          auto fetch = [&](long l) {
+            auto lines = [](const void* b, const void* e) {
+              for (const char* c = static_cast<const char*>(b); c < static_cast<const char*>(e);
+                   c += 64)
+                __builtin_prefetch(c);
+            };
+            for (const std::uint32_t* p = order + lstart[l]; p != order + lstart[l + 1]; ++p) {
+              const std::uint32_t i = *p, k0 = start[i], k1 = start[i + 1];
+              __builtin_prefetch(&x[i]);
+              __builtin_prefetch(&vh[i]);
+              __builtin_prefetch(&Fb[i]);
+              __builtin_prefetch(&Pb[i]);
+              __builtin_prefetch(&mats[i]);
+              __builtin_prefetch(&mats[i].g_c1);
+              __builtin_prefetch(&stress_power[i]);
+              __builtin_prefetch(&energy[i]);
+              __builtin_prefetch(&gsum[i]);
+              __builtin_prefetch(&fext[i]);
+              __builtin_prefetch(&m[i]);
+              __builtin_prefetch(&V0[i]);
+              __builtin_prefetch(&rho0[i]);
+              __builtin_prefetch(&hp[i]);
+              __builtin_prefetch(&upper[i]);
+              __builtin_prefetch(&start[i]);
+              for (const auto& hv : body.history.values) __builtin_prefetch(&hv[i]);
+              lines(ref + k0, ref + k1);
+              lines(rev + k0, rev + k1);
+              lines(keps_k + k0, keps_k + k1);
+              lines(visc + k0, visc + k1);
+              lines(index + k0, index + k1);
+            }
+          };
+          const long lo = static_cast<long>(B[rank]), hi = static_cast<long>(B[rank + 1]);
+          const bool left = rank > 0, right = rank + 1 < t;
+          const long T_end = right ? hi : hi + Q - 1;
+          for (long T = lo; T < T_end; ++T) {
+            if (T + kPrefetchLevels < hi) fetch(T + kPrefetchLevels);
+            long qmax = std::min(Q - 1, left ? (T - lo) / 2 : T - lo);
+            for (long q = std::max(0L, T - hi + 1); q <= qmax; ++q) run(T - q, q);
+          }
+          team.barrier();
+          if (right)
+            for (long q = 1; q < Q; ++q)
+              for (long l = std::max(0L, hi - q); l < std::min(m_lv, hi + q); ++l) run(l, q);
           team.barrier();
         }
-      } else {
-        // Level l's data is read from memory for the block's first phase of l, in an order
-        // the hardware prefetchers do not follow (each level is ~2 × layers runs of the stored
-        // order): the lines are requested ahead.
-        auto fetch = [&](long l) {
-          auto lines = [](const void* b, const void* e) {
-            for (const char* c = static_cast<const char*>(b); c < static_cast<const char*>(e);
-                 c += 64)
-              __builtin_prefetch(c);
-          };
-          for (const std::uint32_t* p = order + lstart[l]; p != order + lstart[l + 1]; ++p) {
-            const std::uint32_t i = *p, k0 = start[i], k1 = start[i + 1];
-            __builtin_prefetch(&x[i]);
-            __builtin_prefetch(&vh[i]);
-            __builtin_prefetch(&Fb[i]);
-            __builtin_prefetch(&Pb[i]);
-            __builtin_prefetch(&mats[i]);
-            __builtin_prefetch(&mats[i].g_c1);
-            __builtin_prefetch(&stress_power[i]);
-            __builtin_prefetch(&energy[i]);
-            __builtin_prefetch(&gsum[i]);
-            __builtin_prefetch(&fext[i]);
-            __builtin_prefetch(&m[i]);
-            __builtin_prefetch(&V0[i]);
-            __builtin_prefetch(&rho0[i]);
-            __builtin_prefetch(&hp[i]);
-            __builtin_prefetch(&upper[i]);
-            __builtin_prefetch(&start[i]);
-            for (const auto& hv : body.history.values) __builtin_prefetch(&hv[i]);
-            lines(ref + k0, ref + k1);
-            lines(rev + k0, rev + k1);
-            lines(keps_k + k0, keps_k + k1);
-            lines(visc + k0, visc + k1);
-            lines(index + k0, index + k1);
-          }
-        };
-        const long lo = static_cast<long>(B[rank]), hi = static_cast<long>(B[rank + 1]);
-        const bool left = rank > 0, right = rank + 1 < t;
-        const long T_end = right ? hi : hi + Q - 1;
-        for (long T = lo; T < T_end; ++T) {
-          if (T + kPrefetchLevels < hi) fetch(T + kPrefetchLevels);
-          long qmax = std::min(Q - 1, left ? (T - lo) / 2 : T - lo);
-          for (long q = std::max(0L, T - hi + 1); q <= qmax; ++q) run(T - q, q);
-        }
-        team.barrier();
-        if (right)
-          for (long q = 1; q < Q; ++q)
-            for (long l = std::max(0L, hi - q); l < std::min(m_lv, hi + q); ++l) run(l, q);
-        team.barrier();
+        // The block's powers summed in particle order, its sub-steps shared among the threads.
+        const int nb = s1 - s0;
+        for (int k = nb * rank / t; k < nb * (rank + 1) / t; ++k)
+          w.step_sums[static_cast<std::size_t>(s0 + k)] =
+              step_sums(w.power.data() + static_cast<std::size_t>(k) * n, w.levels.slot.data());
+        if (s1 < steps) team.barrier();  // before the next block overwrites the rows
       }
-      // The block's powers summed in particle order, its sub-steps shared among the threads.
-      const int nb = s1 - s0;
-      for (int k = nb * rank / t; k < nb * (rank + 1) / t; ++k)
-        w.step_sums[static_cast<std::size_t>(s0 + k)] =
-            step_sums(w.power.data() + static_cast<std::size_t>(k) * n, w.levels.slot.data());
-      if (s1 < steps) team.barrier();  // before the next block overwrites the rows
     }
   });
   if (block == 0) {
