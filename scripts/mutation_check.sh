@@ -122,6 +122,12 @@ M = [
   "rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;", "SubstepPower{0.0, 0.0, 0.0, 0.0};"),
  ("sub-step: the last thread's last sums left out", "src/solid/elastic_substep.cpp",
   "for (int r = steps - s; r < t; ++r) {", "for (int r = steps - s; r + 1 < t; ++r) {"),
+ # Session 18: the sub-step's pair loops in eight lanes (AVX-512F CPUs; elsewhere the scalar
+ # loops run and these two are not caught).
+ ("sub-step lanes: the first lane of every block masked out", "src/solid/substep_pair_lanes_avx512.cpp",
+  "((1u << hi) - 1u) & ~((1u << lo) - 1u)", "((1u << hi) - 2u) & ~((1u << lo) - 1u)"),
+ ("sub-step lanes: the reverse pair's κ ε read at the pair's own slot", "src/solid/substep_pair_lanes_avx512.cpp",
+  "_mm512_mask_i32gather_pd(zero, m, rp, d.keps_x, 8)", "_mm512_loadu_pd(d.keps_x + p)"),
  # Session 17: the step limit, the state check and the lists' displacement in the
  # integrator's sweeps (app/fsi_stepper.cpp last_sweep / drift_sweep).
  ("fused sweeps: step limit from v_half, not the new v", "src/app/fsi_stepper.cpp",

@@ -13,6 +13,7 @@
 #include "solid/hourglass_control.h"
 #include "solid/stress_update.h"
 #include "solid/substep_levels.h"
+#include "solid/substep_pair_lanes.h"
 
 namespace slamsph {
 namespace {
@@ -74,11 +75,48 @@ bool wavefront_bounds(const SubstepLevels& lv, int t, long Q, std::vector<std::s
   return true;
 }
 
+// The ELL layout's blocks and masks (substep_pair_lanes.h) from the pair rows, and its
+// arrays sized: block b of particles [8b, 8b + 8) gets as many slots as its longest row.
+void ell_layout(const std::uint32_t* start, std::size_t n, SubstepEll& e) {
+  const std::size_t nb = (n + 7) / 8;
+  e.off.resize(nb + 1);
+  e.off[0] = 0;
+  e.mask.clear();
+  for (std::size_t b = 0; b < nb; ++b) {
+    std::uint32_t deg[8] = {}, slots = 0;
+    for (std::size_t l = 0; l < 8 && 8 * b + l < n; ++l) {
+      deg[l] = start[8 * b + l + 1] - start[8 * b + l];
+      slots = std::max(slots, deg[l]);
+    }
+    for (std::uint32_t s = 0; s < slots; ++s) {
+      std::uint8_t m = 0;
+      for (unsigned l = 0; l < 8; ++l)
+        if (deg[l] > s) m = static_cast<std::uint8_t>(m | (1u << l));
+      e.mask.push_back(m);
+    }
+    e.off[b + 1] = e.off[b] + 8 * slots;
+  }
+  const std::size_t total = e.off[nb];
+  e.fav.resize(n);
+  e.heat.resize(n);
+  for (auto* v : {&e.g_x, &e.g_y, &e.X_x, &e.X_y, &e.kappa, &e.vw, &e.h_pair, &e.rho_pair,
+                  &e.g_rev_x, &e.g_rev_y, &e.keps_x, &e.keps_y})
+    v->resize(total);
+  e.j.resize(total);
+  e.rev_pos.resize(total);
+  // The slots of the last block's lanes past n: partner 0 (the lanes read its row unmasked).
+  if (n % 8 != 0)
+    for (std::uint32_t p = e.off[nb - 1]; p < total; ++p)
+      if (p % 8 >= n % 8) e.j[p] = 0;
+}
+
 // kHourglass / kViscous: the material's hourglass control and artificial viscosity are on;
 // kEulerian: body.eulerian.active (fixed per call, so the pair loops carry no test for them).
-template <class Law, bool kHourglass, bool kViscous, bool kEulerian>
+// kLanes: the two-pass schedule with the pair loops in lanes (substep_pair_lanes.h), an
+// instance of its own, entered from the scalar one.
+template <class Law, bool kHourglass, bool kViscous, bool kEulerian, bool kLanes = false>
 void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                   const Executor& exec, SubstepSchedule schedule) {
+                   const Executor& exec, SubstepSchedule schedule, SubstepPairLoop loop) {
   const std::size_t n = body.size();
   const SolidTopology& topo = body.topology;
   const SolidMaterial& mat = body.material;
@@ -149,11 +187,30 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::v2d;
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
   // Sub-steps per block of the wavefront schedule, 0 for the two-pass one.
-  const int block = kEulerian ? 0 : wavefront_block(body, steps, schedule);
+  const int block = kEulerian || kLanes ? 0 : wavefront_block(body, steps, schedule);
+  // Both passes' pair loops in eight lanes (two-pass schedule; the set-up then writes the
+  // pair records in the ELL layout too, substep_pair_lanes.h) in their own instance: in this
+  // one, a function of the scalar loops' size, GCC keeps inlining the law and the small
+  // helpers (with both in one function, 7 % more instructions ran in the scalar loops). The
+  // lines above are idempotent.
+  if constexpr (!kEulerian && !kLanes) {
+    if (block == 0 && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available()) {
+      substeps_with<Law, kHourglass, kViscous, false, true>(law, body, steps, h, g, exec,
+                                                            SubstepSchedule::TwoPass, loop);
+      return;
+    }
+  }
+  constexpr bool lanes = kLanes;
   // Power rows: one per sub-step of a wavefront block, or, two-pass schedule, one per thread
   // of the team (see there).
   w.power.resize(n * static_cast<std::size_t>(block > 0 ? block : threads));
   w.step_sums.resize(static_cast<std::size_t>(steps));
+  SubstepEll& ell = w.ell;
+  if (lanes) ell_layout(start, n, ell);
+  // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
+  auto ell_pos = [&](std::size_t i) -> std::uint32_t {
+    return ell.off[i >> 3] + static_cast<std::uint32_t>(i & 7);
+  };
   bool swapped = false;  // the current positions are in w.x_next
   int team_size = 1;     // two-pass schedule: the team's threads
   exec.run_team(threads, [&](const Team& team) {
@@ -206,9 +263,73 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         gs += grad0[k];
       }
       w.gsum[i] = gs;
+      if (lanes) {
+        const std::uint32_t pi = ell_pos(i);
+        const std::uint32_t slots = (ell.off[(i >> 3) + 1] - ell.off[i >> 3]) / 8;
+        for (std::uint32_t s = 0; s < slots; ++s) {
+          const std::uint32_t p = pi + 8 * s, k = start[i] + s;
+          if (k < start[i + 1]) {
+            const std::uint32_t j = index[k];
+            const SubstepPairRef& r = ref[k];
+            ell.g_x[p] = r.g.x;
+            ell.g_y[p] = r.g.y;
+            ell.X_x[p] = r.X.x;
+            ell.X_y[p] = r.X.y;
+            ell.kappa[p] = r.kappa;
+            ell.vw[p] = r.viscous_weight;
+            // monaghan_pi's h and ρ0 as pass 1 forms them.
+            ell.h_pair[p] = 0.5 * (topo.h[i] + topo.h[j]);
+            ell.rho_pair[p] = 0.5 * (body.rho0[i] + body.rho0[j]);
+            ell.g_rev_x[p] = grad0[reverse[k]].x;
+            ell.g_rev_y[p] = grad0[reverse[k]].y;
+            ell.j[p] = static_cast<std::int32_t>(j);
+            ell.rev_pos[p] = static_cast<std::int32_t>(ell_pos(j) + 8 * (reverse[k] - start[j]));
+          } else {  // past i's pairs: masked in the lanes, pointing at valid memory
+            ell.g_rev_x[p] = ell.g_rev_y[p] = 0.0;
+            ell.g_x[p] = ell.g_y[p] = ell.X_x[p] = ell.X_y[p] = ell.kappa[p] = ell.vw[p] = 0.0;
+            ell.h_pair[p] = ell.rho_pair[p] = 0.0;
+            ell.j[p] = static_cast<std::int32_t>(i);
+            ell.rev_pos[p] = static_cast<std::int32_t>(p);
+          }
+        }
+      }
       w.fext[i] = body.f_fluid[i] + body.m[i] * g;
       body.a[i] = body.clamped[i] ? Vec2{} : (body.f_int[i] + w.fext[i]) / body.m[i];
       kick_drift(i, body.v[i], body.a[i], x, vh, x);
+    };
+    // Pass 1's part after the pair loops (F and Ḟ by columns): the law, the stress power and
+    // V0 P.
+    auto pass1_law = [&](std::size_t i, const simd::Cols& Fc, const simd::Cols& Fdc)
+        __attribute__((always_inline)) {
+      const Mat2 F = simd::mat(Fc);
+      Mat2 Fdot = simd::mat(Fdc);
+      // The material's F and Ḟ: the kinematic ones above (the hourglass control below
+      // keeps the kinematic F) times the map C that keeps F continuous across a switch's
+      // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
+      // neighbours.
+      Mat2 Fm = F, K;
+      const bool switched = eulerian && body.eulerian.switched[i];
+      if constexpr (eulerian) {
+        if (switched) {
+          eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
+        } else {
+          Fm = F * body.F_rebase[i];
+          Fdot = Fdot * body.F_rebase[i];
+        }
+      }
+      const Mat2 F_old = Fb[i], P_old = Pb[i];
+      Fb[i] = Fm;
+      const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
+      Pb[i] = P;
+      if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
+      if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
+      // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
+      stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
+      SubstepParticleMats& mi = mats[i];
+      // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
+      const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
+      simd::store(mi.vp_c0, VP.c0);
+      simd::store(mi.vp_c1, VP.c1);
     };
     // Pass 1: F and Ḟ, the viscous pair terms, the law's committing update, stress power,
     // the internal energy, hourglass moment. Two-lane arithmetic (core/simd2.h) with the
@@ -252,35 +373,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           visc[reverse[k]] = {-f, q};
         }
       }
-      const Mat2 F = simd::mat(Fc);
-      Mat2 Fdot = simd::mat(Fdc);
-      // The material's F and Ḟ: the kinematic ones above (the hourglass control below
-      // keeps the kinematic F) times the map C that keeps F continuous across a switch's
-      // topology rebuild (SolidBody::F_rebase); a switched particle's from its current
-      // neighbours.
-      Mat2 Fm = F, K;
-      const bool switched = eulerian && body.eulerian.switched[i];
-      if constexpr (eulerian) {
-        if (switched) {
-          eulerian_motion(body, x, vh, h, i, Fm, Fdot, K);
-        } else {
-          Fm = F * body.F_rebase[i];
-          Fdot = Fdot * body.F_rebase[i];
-        }
-      }
-      const Mat2 F_old = Fb[i], P_old = Pb[i];
-      Fb[i] = Fm;
-      const Mat2 P = commit_stress_at(law, body.history, F_old, Fm, h, i);
-      Pb[i] = P;
-      if constexpr (eulerian) w.P_kin[i] = body.kinematic_P(i);
-      if (switched) body.eulerian.stress_map[i] = eulerian_stress_map(body, i, K);
-      // de/dt = P : Ḟ / ρ0 with P trapezoidal over the sub-step (spec §3).
-      stress_power[i] = ddot(0.5 * (P_old + P), Fdot) / rho0[i];
-      SubstepParticleMats& mi = mats[i];
-      // V0 P of the TL pair force: P, or P Cᵀ after an Eulerian switch (tl_pair_force.h).
-      const simd::Cols VP = simd::cols(V0[i] * (eulerian ? w.P_kin[i] : P));
-      simd::store(mi.vp_c0, VP.c0);
-      simd::store(mi.vp_c1, VP.c1);
+      pass1_law(i, Fc, Fdc);
       if constexpr (kHourglass) {
         // hourglass_moment (hourglass_control.h) with the stored X_ij and κ_ij.
         simd::Cols Gi;
@@ -292,8 +385,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
           simd::store(keps_k[k], keps);
           simd::add_outer(Gi, keps, Xx, Xy);
         }
-        simd::store(mi.g_c0, Gi.c0);
-        simd::store(mi.g_c1, Gi.c1);
+        simd::store(mats[i].g_c0, Gi.c0);
+        simd::store(mats[i].g_c1, Gi.c1);
       }
     };
     // Pass 2: forces (stress_force_on, viscous_force_on and hourglass_force_on in one loop
@@ -301,23 +394,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     // kick and drift (if `more`); i's powers into pw. The pair terms of i's own side,
     // V0_i P_i g_ij and G_i g_ij, are summed as V0_i P_i Σ_j g_ij and G_i Σ_j g_ij (w.gsum,
     // per call): the same forces at a different rounding (tests/unit/test_solid_substep.cpp).
-    auto pass2 = [&](std::size_t i, bool more, SubstepPower& pw) __attribute__((always_inline)) {
-      v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
-      double heat = 0.0;
-      for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
-        const SubstepPairRev& r = rev[k];
-        const SubstepParticleMats& mj = mats[r.j];
-        const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
-        fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
-        if constexpr (kViscous) {
-          fav += simd::load(visc[k].f);
-          heat += visc[k].q;
-        }
-        if constexpr (kHourglass) {
-          grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
-          grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
-        }
-      }
+    // The tail after the pair sums (fs, grad, fav, heat: of the scalar loop below or of the
+    // lanes).
+    auto tail = [&](std::size_t i, bool more, SubstepPower& pw, v2d fs, v2d grad, v2d fav,
+                    double heat) __attribute__((always_inline)) {
       const SubstepParticleMats& mi = mats[i];
       const v2d gs = simd::load(gsum[i]), gsx = lo(gs), gsy = hi(gs);
       // The tail in two-lane arithmetic as well (each lane rounds as the Vec2 form below it
@@ -356,6 +436,85 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         simd::store(xn[i], simd::load(x[i]) + simd::splat(h) * vn);
       }
     };
+    auto pass2 = [&](std::size_t i, bool more, SubstepPower& pw) __attribute__((always_inline)) {
+      v2d fs{0.0, 0.0}, grad{0.0, 0.0}, fav{0.0, 0.0};
+      double heat = 0.0;
+      for (std::uint32_t k = start[i]; k < start[i + 1]; ++k) {
+        const SubstepPairRev& r = rev[k];
+        const SubstepParticleMats& mj = mats[r.j];
+        const v2d gr = simd::load(r.g_rev), gx = lo(gr), gy = hi(gr);
+        fs += simd::load(mj.vp_c0) * gx + simd::load(mj.vp_c1) * gy;
+        if constexpr (kViscous) {
+          fav += simd::load(visc[k].f);
+          heat += visc[k].q;
+        }
+        if constexpr (kHourglass) {
+          grad += simd::load(mj.g_c0) * gx + simd::load(mj.g_c1) * gy;
+          grad += simd::load(keps_k[k]) - simd::load(keps_k[r.reverse]);
+        }
+      }
+      tail(i, more, pw, fs, grad, fav, heat);
+    };
+    // Pass 2 of particles [i0, i1) in lanes: the pair sums of a chunk, then the tails.
+    const SubstepLaneData lane_data{
+        ell.off.data(),     ell.mask.data(),   ell.g_rev_x.data(),
+        ell.g_rev_y.data(), ell.j.data(),      ell.rev_pos.data(),
+        ell.keps_x.data(),  ell.keps_y.data(), reinterpret_cast<const double*>(mats),
+        kHourglass};
+    SubstepLaneSums sums;
+    // Pass 1 of particles [i0, i1) in lanes: the pair loops of a chunk, then per particle the
+    // law, the stress power, V0 P and G.
+    const SubstepLane1Data lane1_data{ell.off.data(),
+                                      ell.mask.data(),
+                                      ell.g_x.data(),
+                                      ell.g_y.data(),
+                                      ell.X_x.data(),
+                                      ell.X_y.data(),
+                                      ell.kappa.data(),
+                                      ell.vw.data(),
+                                      ell.h_pair.data(),
+                                      ell.rho_pair.data(),
+                                      ell.j.data(),
+                                      ell.rev_pos.data(),
+                                      reinterpret_cast<const double*>(x.data()),
+                                      reinterpret_cast<const double*>(vh.data()),
+                                      c,
+                                      av_alpha,
+                                      av_beta,
+                                      ell.keps_x.data(),
+                                      ell.keps_y.data(),
+                                      kHourglass,
+                                      kViscous};
+    SubstepLane1Sums sums1;
+    auto pass1_lanes = [&](std::size_t base, std::size_t i0, std::size_t i1) {
+      substep_lanes_avx512_pass1(lane1_data, base, i0, i1, sums1);
+      for (std::size_t i = i0; i < i1; ++i) {
+        const std::size_t o = i - base;
+        // Columns: c0 = (xx, yx), c1 = (xy, yy).
+        const simd::Cols Fc{v2d{sums1.F[0][o], sums1.F[2][o]}, v2d{sums1.F[1][o], sums1.F[3][o]}};
+        const simd::Cols Fdc{v2d{sums1.Fd[0][o], sums1.Fd[2][o]},
+                             v2d{sums1.Fd[1][o], sums1.Fd[3][o]}};
+        pass1_law(i, Fc, Fdc);
+        if constexpr (kViscous) {
+          ell.fav[i] = Vec2{sums1.fav_x[o], sums1.fav_y[o]};
+          ell.heat[i] = sums1.heat[o];
+        }
+        if constexpr (kHourglass) {
+          mats[i].g_c0 = Vec2{sums1.G[0][o], sums1.G[2][o]};
+          mats[i].g_c1 = Vec2{sums1.G[1][o], sums1.G[3][o]};
+        }
+      }
+    };
+    auto pass2_lanes = [&](std::size_t base, std::size_t i0, std::size_t i1, bool more,
+                           SubstepPower* row) {
+      substep_lanes_avx512_pass2(lane_data, base, i0, i1, sums);
+      for (std::size_t i = i0; i < i1; ++i) {
+        const std::size_t o = i - base;
+        // The viscous sums come from pass 1's lanes (zero without viscosity).
+        tail(i, more, row[i], v2d{sums.fs_x[o], sums.fs_y[o]}, v2d{sums.grad_x[o], sums.grad_y[o]},
+             kViscous ? simd::load(ell.fav[i]) : v2d{0.0, 0.0}, kViscous ? ell.heat[i] : 0.0);
+      }
+    };
     if (block == 0) {
       // Two passes over the team's share per sub-step, a barrier after each. The sums of the
       // powers run in particle order, a serial chain of n adds per sub-step; they are folded
@@ -372,144 +531,169 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       if (team.leader()) team_size = t;
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
-      for (int step = 0; step < steps; ++step) {
-        // The current pairs of the switched particles at the drifted positions.
-        if constexpr (eulerian) {
-          if (team.leader()) build_eulerian_pairs(body, x);
-          team.barrier();
-        }
-        for (std::size_t i = b; i < e; ++i) pass1(i);
-        team.barrier();
-        const bool more = step + 1 < steps;
-        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step % t) * n;
-        const int s = step - rank;  // the sub-step whose chain this thread continues
-        if (s >= 0) {
-          const SubstepPower* const sum_row = w.power.data() + static_cast<std::size_t>(s % t) * n;
-          SubstepPower& carry = w.step_sums[static_cast<std::size_t>(s)];
-          SubstepPower acc = rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;
-          for (std::size_t i = b; i < e; ++i) {
-            pass2(i, more, row[i]);
-            add_power(acc, sum_row[i], i);
-          }
-          carry = acc;
-        } else {
-          for (std::size_t i = b; i < e; ++i) pass2(i, more, row[i]);
-        }
-        team.barrier();
-        if (eulerian && more) {
-          std::swap(x, xn);
-          std::swap(vh, vhn);
-          if (team.leader()) swapped = !swapped;
-        }
-      }
-      return;
-    }
-    // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
-    // sub-steps in blocks of `block`, each block a sequence of Q phases (the set-up in the
-    // first block, then pass 1 and pass 2 of each sub-step). Phase q of level l needs phase
-    // q - 1 of levels l - 1, l and l + 1 (pass 1 reads the neighbours' x and v½ of the last
-    // pass 2; pass 2 reads their V0 P, G, κ ε and viscous terms of pass 1 and overwrites x
-    // and v½ in place, which those neighbours' pass 1 has read) and nothing else, so phase q
-    // of level l may run once phase q - 1 of levels l - 1 .. l + 1 is done and before phase
-    // q + 1 of any of them. Each thread runs the tasks (l, q) of its chunk of levels
-    // [lo, hi) that depend on its chunk only (l + q < hi unless the last chunk, l − q ≥ lo
-    // unless the first), in order of l + q then q: at any moment the working set is ~Q
-    // levels, which stay in the core's cache over the block's sub-steps instead of the whole
-    // body being streamed twice per sub-step. After a barrier each thread but the last
-    // finishes the seam at its chunk's upper end (levels [hi − q, hi + q) of phase q), which
-    // needs both chunks. Each particle's arithmetic is that of the two-pass schedule; the
-    // powers of the energy bookkeeping go to one row per sub-step and are summed in particle
-    // order after the block, so nothing depends on the schedule or the thread count.
-    const std::uint32_t* const order = w.levels.order.data();
-    const std::uint32_t* const lstart = w.levels.start.data();
-    const long m_lv = static_cast<long>(w.levels.levels());
-    const int rank = team.rank(), t = team.size();
-    std::vector<std::size_t> B(static_cast<std::size_t>(t) + 1);
-    for (int s0 = 0; s0 < steps; s0 += block) {
-      const int s1 = std::min(steps, s0 + block);
-      const int first = s0 == 0 ? 1 : 0;  // the set-up is phase 0 of the first block
-      const long Q = 2 * (s1 - s0) + first;
-      auto run = [&](long l, long q) __attribute__((always_inline)) {
-        const std::uint32_t* p = order + lstart[l];
-        const std::uint32_t* const pe = order + lstart[l + 1];
-        if (q < first) {
-          for (; p != pe; ++p) setup(*p);
-          return;
-        }
-        const long qq = q - first;
-        const int step = s0 + static_cast<int>(qq / 2);
-        if (qq % 2 == 0) {
-          for (; p != pe; ++p) pass1(*p);
-          return;
-        }
-        const bool more = step + 1 < steps;
-        SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step - s0) * n;
-        for (; p != pe; ++p) pass2(*p, more, row[p - order]);
-      };
-      if (!wavefront_bounds(w.levels, t, Q, B)) {
-        // A chunk too narrow for its seams (a short body on several threads): phase by phase,
-        // each thread a contiguous share of the levels, a barrier after each phase.
-        const long lo = m_lv * rank / t, hi = m_lv * (rank + 1) / t;
-        for (long q = 0; q < Q; ++q) {
-          for (long l = lo; l < hi; ++l) run(l, q);
-          team.barrier();
-        }
-      } else {
-        // Level l's data is read from memory for the block's first phase of l, in an order
-        // the hardware prefetchers do not follow (each level is ~2 × layers runs of the stored
-        // order): the lines are requested ahead.
-        auto fetch = [&](long l) {
-          auto lines = [](const void* b, const void* e) {
-            for (const char* c = static_cast<const char*>(b); c < static_cast<const char*>(e);
-                 c += 64)
-              __builtin_prefetch(c);
-          };
-          for (const std::uint32_t* p = order + lstart[l]; p != order + lstart[l + 1]; ++p) {
-            const std::uint32_t i = *p, k0 = start[i], k1 = start[i + 1];
-            __builtin_prefetch(&x[i]);
-            __builtin_prefetch(&vh[i]);
-            __builtin_prefetch(&Fb[i]);
-            __builtin_prefetch(&Pb[i]);
-            __builtin_prefetch(&mats[i]);
-            __builtin_prefetch(&mats[i].g_c1);
-            __builtin_prefetch(&stress_power[i]);
-            __builtin_prefetch(&energy[i]);
-            __builtin_prefetch(&gsum[i]);
-            __builtin_prefetch(&fext[i]);
-            __builtin_prefetch(&m[i]);
-            __builtin_prefetch(&V0[i]);
-            __builtin_prefetch(&rho0[i]);
-            __builtin_prefetch(&hp[i]);
-            __builtin_prefetch(&upper[i]);
-            __builtin_prefetch(&start[i]);
-            for (const auto& hv : body.history.values) __builtin_prefetch(&hv[i]);
-            lines(ref + k0, ref + k1);
-            lines(rev + k0, rev + k1);
-            lines(keps_k + k0, keps_k + k1);
-            lines(visc + k0, visc + k1);
-            lines(index + k0, index + k1);
+      // kLanes: both passes' pair loops in the lanes, chunk by chunk (pass 2: then the
+      // chunk's tails and `after`, in particle order).
+      auto sub_steps = [&]() {
+        auto pass2_share = [&](bool more, SubstepPower* row, auto&& after)
+            __attribute__((always_inline)) {
+          if constexpr (kLanes) {
+            for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk) {
+              const std::size_t i0 = std::max(b, c), i1 = std::min(e, c + kSubstepLaneChunk);
+              pass2_lanes(c, i0, i1, more, row);
+              for (std::size_t i = i0; i < i1; ++i) after(i);
+            }
+          } else {
+            for (std::size_t i = b; i < e; ++i) {
+              pass2(i, more, row[i]);
+              after(i);
+            }
           }
         };
-        const long lo = static_cast<long>(B[rank]), hi = static_cast<long>(B[rank + 1]);
-        const bool left = rank > 0, right = rank + 1 < t;
-        const long T_end = right ? hi : hi + Q - 1;
-        for (long T = lo; T < T_end; ++T) {
-          if (T + kPrefetchLevels < hi) fetch(T + kPrefetchLevels);
-          long qmax = std::min(Q - 1, left ? (T - lo) / 2 : T - lo);
-          for (long q = std::max(0L, T - hi + 1); q <= qmax; ++q) run(T - q, q);
+        for (int step = 0; step < steps; ++step) {
+          // The current pairs of the switched particles at the drifted positions.
+          if constexpr (eulerian) {
+            if (team.leader()) build_eulerian_pairs(body, x);
+            team.barrier();
+          }
+          if constexpr (kLanes) {
+            for (std::size_t c = b & ~std::size_t{7}; c < e; c += kSubstepLaneChunk)
+              pass1_lanes(c, std::max(b, c), std::min(e, c + kSubstepLaneChunk));
+          } else {
+            for (std::size_t i = b; i < e; ++i) pass1(i);
+          }
+          team.barrier();
+          const bool more = step + 1 < steps;
+          SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step % t) * n;
+          const int s = step - rank;  // the sub-step whose chain this thread continues
+          if (s >= 0) {
+            const SubstepPower* const sum_row =
+                w.power.data() + static_cast<std::size_t>(s % t) * n;
+            SubstepPower& carry = w.step_sums[static_cast<std::size_t>(s)];
+            SubstepPower acc = rank == 0 ? SubstepPower{0.0, 0.0, 0.0, 0.0} : carry;
+            pass2_share(more, row, [&](std::size_t i) { add_power(acc, sum_row[i], i); });
+            carry = acc;
+          } else {
+            pass2_share(more, row, [](std::size_t) {});
+          }
+          team.barrier();
+          if (eulerian && more) {
+            std::swap(x, xn);
+            std::swap(vh, vhn);
+            if (team.leader()) swapped = !swapped;
+          }
         }
-        team.barrier();
-        if (right)
-          for (long q = 1; q < Q; ++q)
-            for (long l = std::max(0L, hi - q); l < std::min(m_lv, hi + q); ++l) run(l, q);
-        team.barrier();
+      };
+      sub_steps();
+      return;
+    }
+    if constexpr (!kLanes) {
+      // Wavefront schedule (substep_levels.h; docs/validation.md "Solid sub-step"): the
+      // sub-steps in blocks of `block`, each block a sequence of Q phases (the set-up in the
+      // first block, then pass 1 and pass 2 of each sub-step). Phase q of level l needs phase
+      // q - 1 of levels l - 1, l and l + 1 (pass 1 reads the neighbours' x and v½ of the last
+      // pass 2; pass 2 reads their V0 P, G, κ ε and viscous terms of pass 1 and overwrites x
+      // and v½ in place, which those neighbours' pass 1 has read) and nothing else, so phase q
+      // of level l may run once phase q - 1 of levels l - 1 .. l + 1 is done and before phase
+      // q + 1 of any of them. Each thread runs the tasks (l, q) of its chunk of levels
+      // [lo, hi) that depend on its chunk only (l + q < hi unless the last chunk, l − q ≥ lo
+      // unless the first), in order of l + q then q: at any moment the working set is ~Q
+      // levels, which stay in the core's cache over the block's sub-steps instead of the whole
+      // body being streamed twice per sub-step. After a barrier each thread but the last
+      // finishes the seam at its chunk's upper end (levels [hi − q, hi + q) of phase q), which
+      // needs both chunks. Each particle's arithmetic is that of the two-pass schedule; the
+      // powers of the energy bookkeeping go to one row per sub-step and are summed in particle
+      // order after the block, so nothing depends on the schedule or the thread count.
+      const std::uint32_t* const order = w.levels.order.data();
+      const std::uint32_t* const lstart = w.levels.start.data();
+      const long m_lv = static_cast<long>(w.levels.levels());
+      const int rank = team.rank(), t = team.size();
+      std::vector<std::size_t> B(static_cast<std::size_t>(t) + 1);
+      for (int s0 = 0; s0 < steps; s0 += block) {
+        const int s1 = std::min(steps, s0 + block);
+        const int first = s0 == 0 ? 1 : 0;  // the set-up is phase 0 of the first block
+        const long Q = 2 * (s1 - s0) + first;
+        auto run = [&](long l, long q) __attribute__((always_inline)) {
+          const std::uint32_t* p = order + lstart[l];
+          const std::uint32_t* const pe = order + lstart[l + 1];
+          if (q < first) {
+            for (; p != pe; ++p) setup(*p);
+            return;
+          }
+          const long qq = q - first;
+          const int step = s0 + static_cast<int>(qq / 2);
+          if (qq % 2 == 0) {
+            for (; p != pe; ++p) pass1(*p);
+            return;
+          }
+          const bool more = step + 1 < steps;
+          SubstepPower* const row = w.power.data() + static_cast<std::size_t>(step - s0) * n;
+          for (; p != pe; ++p) pass2(*p, more, row[p - order]);
+        };
+        if (!wavefront_bounds(w.levels, t, Q, B)) {
+          // A chunk too narrow for its seams (a short body on several threads): phase by phase,
+          // each thread a contiguous share of the levels, a barrier after each phase.
+          const long lo = m_lv * rank / t, hi = m_lv * (rank + 1) / t;
+          for (long q = 0; q < Q; ++q) {
+            for (long l = lo; l < hi; ++l) run(l, q);
+            team.barrier();
+          }
+        } else {
+          // Level l's data is read from memory for the block's first phase of l, in an order
+          // the hardware prefetchers do not follow (each level is ~2 × layers runs of the stored
+          // order): the lines are requested ahead.
+          auto fetch = [&](long l) {
+            auto lines = [](const void* b, const void* e) {
+              for (const char* c = static_cast<const char*>(b); c < static_cast<const char*>(e);
+                   c += 64)
+                __builtin_prefetch(c);
+            };
+            for (const std::uint32_t* p = order + lstart[l]; p != order + lstart[l + 1]; ++p) {
+              const std::uint32_t i = *p, k0 = start[i], k1 = start[i + 1];
+              __builtin_prefetch(&x[i]);
+              __builtin_prefetch(&vh[i]);
+              __builtin_prefetch(&Fb[i]);
+              __builtin_prefetch(&Pb[i]);
+              __builtin_prefetch(&mats[i]);
+              __builtin_prefetch(&mats[i].g_c1);
+              __builtin_prefetch(&stress_power[i]);
+              __builtin_prefetch(&energy[i]);
+              __builtin_prefetch(&gsum[i]);
+              __builtin_prefetch(&fext[i]);
+              __builtin_prefetch(&m[i]);
+              __builtin_prefetch(&V0[i]);
+              __builtin_prefetch(&rho0[i]);
+              __builtin_prefetch(&hp[i]);
+              __builtin_prefetch(&upper[i]);
+              __builtin_prefetch(&start[i]);
+              for (const auto& hv : body.history.values) __builtin_prefetch(&hv[i]);
+              lines(ref + k0, ref + k1);
+              lines(rev + k0, rev + k1);
+              lines(keps_k + k0, keps_k + k1);
+              lines(visc + k0, visc + k1);
+              lines(index + k0, index + k1);
+            }
+          };
+          const long lo = static_cast<long>(B[rank]), hi = static_cast<long>(B[rank + 1]);
+          const bool left = rank > 0, right = rank + 1 < t;
+          const long T_end = right ? hi : hi + Q - 1;
+          for (long T = lo; T < T_end; ++T) {
+            if (T + kPrefetchLevels < hi) fetch(T + kPrefetchLevels);
+            long qmax = std::min(Q - 1, left ? (T - lo) / 2 : T - lo);
+            for (long q = std::max(0L, T - hi + 1); q <= qmax; ++q) run(T - q, q);
+          }
+          team.barrier();
+          if (right)
+            for (long q = 1; q < Q; ++q)
+              for (long l = std::max(0L, hi - q); l < std::min(m_lv, hi + q); ++l) run(l, q);
+          team.barrier();
+        }
+        // The block's powers summed in particle order, its sub-steps shared among the threads.
+        const int nb = s1 - s0;
+        for (int k = nb * rank / t; k < nb * (rank + 1) / t; ++k)
+          w.step_sums[static_cast<std::size_t>(s0 + k)] =
+              step_sums(w.power.data() + static_cast<std::size_t>(k) * n, w.levels.slot.data());
+        if (s1 < steps) team.barrier();  // before the next block overwrites the rows
       }
-      // The block's powers summed in particle order, its sub-steps shared among the threads.
-      const int nb = s1 - s0;
-      for (int k = nb * rank / t; k < nb * (rank + 1) / t; ++k)
-        w.step_sums[static_cast<std::size_t>(s0 + k)] =
-            step_sums(w.power.data() + static_cast<std::size_t>(k) * n, w.levels.slot.data());
-      if (s1 < steps) team.barrier();  // before the next block overwrites the rows
     }
   });
   if (block == 0) {
@@ -534,31 +718,33 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
 
 template <class Law>
 void substeps_dispatch(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
-                       const Executor& exec, SubstepSchedule schedule) {
+                       const Executor& exec, SubstepSchedule schedule, SubstepPairLoop loop) {
   const SolidMaterial& mat = body.material;
   const bool hourglass = mat.hourglass != 0.0;
   const bool viscous = !(mat.av_alpha == 0.0 && mat.av_beta == 0.0);
   const bool eulerian = body.eulerian.active;
   if (hourglass && viscous)
-    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, true, true, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, true, true, false>(law, body, steps, h, g, exec, schedule, loop);
   else if (hourglass)
-    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, true, false, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, true, false, false>(law, body, steps, h, g, exec, schedule, loop);
   else if (viscous)
-    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec, schedule);
+    eulerian ? substeps_with<Law, false, true, true>(law, body, steps, h, g, exec, schedule, loop)
+             : substeps_with<Law, false, true, false>(law, body, steps, h, g, exec, schedule, loop);
   else
-    eulerian ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec, schedule)
-             : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec, schedule);
+    eulerian
+        ? substeps_with<Law, false, false, true>(law, body, steps, h, g, exec, schedule, loop)
+        : substeps_with<Law, false, false, false>(law, body, steps, h, g, exec, schedule, loop);
 }
 
 }  // namespace
 
 void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
-                          SubstepSchedule schedule) {
-  std::visit([&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec, schedule); },
-             body.material.law);
+                          SubstepSchedule schedule, SubstepPairLoop loop) {
+  std::visit(
+      [&](const auto& law) { substeps_dispatch(law, body, steps, h, g, exec, schedule, loop); },
+      body.material.law);
 }
 
 }  // namespace slamsph

@@ -42,6 +42,9 @@
 // start (of an earlier sub-step, one per rank; session 17), so it too does not depend on
 // the thread count. All of this is bit-identical to the sub-step before these
 // storage changes (docs/validation.md, "Solid sub-step").
+// On CPUs with AVX-512F the two-pass schedule runs both passes' pair loops in eight lanes,
+// one particle per lane, over a slot-major copy of the pair records
+// (solid/substep_pair_lanes.h; session 18); the law and the tails stay scalar; same bits.
 // Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
 // for large bodies without an Eulerian switch a wavefront over the pair graph's levels
 // (solid/substep_levels.h), which advances a band of ~2 × block levels through up to 20
@@ -80,7 +83,13 @@ enum class SubstepSchedule { Auto, TwoPass, Wavefront };
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,
 // f_av, f_hg and the law's history at the end of the last sub-step and adds the sub-steps'
 // dissipated, hourglass and external work to the body's accumulators.
+// The passes' pair loops: Auto takes the eight lanes (solid/substep_pair_lanes.h) in the
+// two-pass schedule without an Eulerian switch where the CPU has AVX-512F, Scalar the scalar
+// loops always (tests: the same bits).
+enum class SubstepPairLoop { Auto, Scalar };
+
 void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
-                          SubstepSchedule schedule = SubstepSchedule::Auto);
+                          SubstepSchedule schedule = SubstepSchedule::Auto,
+                          SubstepPairLoop loop = SubstepPairLoop::Auto);
 
 }  // namespace slamsph

@@ -49,6 +49,24 @@ struct SubstepPower {
   double viscous, hourglass, external, clamp;
 };
 
+// The slot-major (ELL) pair layout of the passes' eight lanes (solid/substep_pair_lanes.h):
+// slot s of particle i at off[i / 8] + 8 s + i mod 8. Used by the two-pass schedule where
+// the CPU has AVX-512F (otherwise empty); per call: off, mask (ell_layout), the pair
+// constants (the set-up); per sub-step: keps_* (pass 1, instead of keps), fav and heat (pass
+// 1, instead of viscous).
+struct SubstepEll {
+  std::vector<std::uint32_t> off;  // per block of eight particles, and the total at the end
+  std::vector<std::uint8_t> mask;  // per block and slot: the lanes with an s-th pair
+  std::vector<double> g_x, g_y, X_x, X_y, kappa, vw;  // pass 1's (SubstepPairRef)
+  std::vector<double> h_pair, rho_pair;               // ½ (h_i + h_j), ½ (ρ0_i + ρ0_j)
+  std::vector<double> g_rev_x, g_rev_y;
+  std::vector<std::int32_t> j, rev_pos;
+  std::vector<double> keps_x, keps_y;
+  // Per particle, pass 1 in lanes: the sums of the viscous pair terms for pass 2.
+  std::vector<Vec2> fav;
+  std::vector<double> heat;
+};
+
 struct SubstepWorkspace {
   // Per pair k = (i, j), in the topology's CSR order: reference constants, filled at the
   // start of every call (so a rebuilt topology needs no invalidation), read in the pair
@@ -77,6 +95,7 @@ struct SubstepWorkspace {
   std::vector<Vec2> x_next;
   std::vector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;           // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
+  SubstepEll ell;                    // the pair loops in lanes (two-pass schedule, AVX-512F)
 
   void resize(std::size_t particles, std::size_t pairs) {
     ref.resize(pairs);
