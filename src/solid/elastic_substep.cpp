@@ -194,7 +194,9 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // helpers (with both in one function, 7 % more instructions ran in the scalar loops). The
   // lines above are idempotent.
   if constexpr (!kEulerian && !kLanes) {
-    if (block == 0 && loop == SubstepPairLoop::Auto && substep_lanes_avx512_available()) {
+    const bool lanes_wanted = loop == SubstepPairLoop::Lanes ||
+                              (loop == SubstepPairLoop::Auto && steps >= kMinLaneSubsteps);
+    if (block == 0 && lanes_wanted && substep_lanes_avx512_available()) {
       substeps_with<Law, kHourglass, kViscous, false, true>(law, body, steps, h, g, exec,
                                                             SubstepSchedule::TwoPass, loop);
       return;

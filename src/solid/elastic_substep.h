@@ -83,10 +83,15 @@ enum class SubstepSchedule { Auto, TwoPass, Wavefront };
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,
 // f_av, f_hg and the law's history at the end of the last sub-step and adds the sub-steps'
 // dissipated, hourglass and external work to the body's accumulators.
-// The passes' pair loops: Auto takes the eight lanes (solid/substep_pair_lanes.h) in the
+// The passes' pair loops: Lanes takes the eight lanes (solid/substep_pair_lanes.h) in the
 // two-pass schedule without an Eulerian switch where the CPU has AVX-512F, Scalar the scalar
-// loops always (tests: the same bits).
-enum class SubstepPairLoop { Auto, Scalar };
+// loops always (tests: the same bits), Auto the lanes for calls of at least
+// kMinLaneSubsteps sub-steps: the set-up writes the pair records in the lanes' layout once
+// per call, which a call of one sub-step does not win back (the oscillating plate, one
+// sub-step per call: its solid phase 6.4 → 8.2-8.6 s with the lanes, docs/validation.md §6
+// "Solid sub-step", session 18).
+enum class SubstepPairLoop { Auto, Scalar, Lanes };
+inline constexpr int kMinLaneSubsteps = 8;
 
 void run_elastic_substeps(SolidBody& body, int steps, double h, Vec2 g, const Executor& exec,
                           SubstepSchedule schedule = SubstepSchedule::Auto,

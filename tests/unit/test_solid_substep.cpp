@@ -367,8 +367,9 @@ TEST(ElasticSubstep, TwoPassPowerRowsPerThreadBitIdentical) {
   }
 }
 
-// Both passes' pair loops in eight lanes (solid/substep_pair_lanes.h; the two-pass
-// schedule's default where the CPU has AVX-512F) against the scalar loops: the same bits,
+// Both passes' pair loops in eight lanes (solid/substep_pair_lanes.h; SubstepPairLoop::Lanes,
+// the two-pass schedule's default for calls of kMinLaneSubsteps or more where the CPU has
+// AVX-512F) against the scalar loops: the same bits,
 // energy accumulators included, on the loaded, clamped ring (3 220 particles, 3–5 pairs
 // each: masked slots in 26 of its 403 blocks of eight, the last block half empty) and on a
 // block, with every on/off state of hourglass control and viscosity (four instances of the
@@ -389,7 +390,7 @@ void expect_lanes_match_scalar(const SolidBody& body) {
     const Executor exec(threads);
     for (int steps : calls)
       run_elastic_substeps(b, steps, h, {0.0, -9.81}, exec, SubstepSchedule::TwoPass,
-                           SubstepPairLoop::Auto);
+                           SubstepPairLoop::Lanes);
     SCOPED_TRACE(threads);
     expect_identical(b, ref);
   }
@@ -417,7 +418,7 @@ TEST(ElasticSubstep, PairLanesBitIdenticalToScalarHourglassViscousOnOff) {
       for (int threads = 1; threads <= 2; ++threads) {
         SolidBody c = b;
         run_elastic_substeps(c, 9, h, {0.0, -9.81}, Executor(threads), SubstepSchedule::TwoPass,
-                             SubstepPairLoop::Auto);
+                             SubstepPairLoop::Lanes);
         SCOPED_TRACE(threads);
         expect_identical(c, ref);
       }
