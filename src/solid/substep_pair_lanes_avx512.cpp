@@ -21,6 +21,20 @@ inline __mmask8 range_mask(std::size_t b8, std::size_t i0, std::size_t i1) {
   return static_cast<__mmask8>(((1u << hi) - 1u) & ~((1u << lo) - 1u));
 }
 
+// The block of particles [b8, b8 + 8) in the ELL layout, both passes: the lanes of [i0, i1)
+// in it, the position of its slot 0, its slot count and its slots' lane masks.
+struct EllBlock {
+  __mmask8 range;
+  std::uint32_t p0, slots;
+  const std::uint8_t* mask;
+};
+inline EllBlock ell_block(const std::uint32_t* off, const std::uint8_t* mask, std::size_t b8,
+                          std::size_t i0, std::size_t i1) {
+  const std::size_t blk = b8 / 8;
+  const std::uint32_t p0 = off[blk];
+  return {range_mask(b8, i0, i1), p0, (off[blk + 1] - p0) / 8, mask + p0 / 8};
+}
+
 // c0 gx + c1 gy: two products, then their sum (the scalar loop's rounding).
 inline __m512d dot_slot(__m512d c0, __m512d c1, __m512d gx, __m512d gy) {
   return _mm512_add_pd(_mm512_mul_pd(c0, gx), _mm512_mul_pd(c1, gy));
@@ -31,11 +45,7 @@ void pair_sums(const SubstepLaneData& d, std::size_t base, std::size_t i0, std::
                SubstepLaneSums& out) {
   const __m512d zero = _mm512_setzero_pd();
   for (std::size_t b8 = i0 & ~std::size_t{7}; b8 < i1; b8 += 8) {
-    const __mmask8 range = range_mask(b8, i0, i1);
-    const std::size_t blk = b8 / 8;
-    const std::uint32_t p0 = d.off[blk];
-    const std::uint32_t slots = (d.off[blk + 1] - p0) / 8;
-    const std::uint8_t* const mk = d.mask + p0 / 8;
+    const auto [range, p0, slots, mk] = ell_block(d.off, d.mask, b8, i0, i1);
     __m512d fs_x = zero, fs_y = zero, grad_x = zero, grad_y = zero;
     for (std::uint32_t s = 0; s < slots; ++s) {
       // Lanes whose particle has an s-th pair (fewer with every slot: none left, none later).
@@ -131,11 +141,7 @@ void pass1_pairs(const SubstepLane1Data& d, std::size_t base, std::size_t i0, st
   const __m512d mhalf = _mm512_set1_pd(-0.5);
   __m512d dxs[kMaxKeptSlots], dys[kMaxKeptSlots];
   for (std::size_t b8 = i0 & ~std::size_t{7}; b8 < i1; b8 += 8) {
-    const __mmask8 range = range_mask(b8, i0, i1);
-    const std::size_t blk = b8 / 8;
-    const std::uint32_t p0 = d.off[blk];
-    const std::uint32_t slots = (d.off[blk + 1] - p0) / 8;
-    const std::uint8_t* const mk = d.mask + p0 / 8;
+    const auto [range, p0, slots, mk] = ell_block(d.off, d.mask, b8, i0, i1);
     const __m256i i2 = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(2 * b8)), lane2);
     const __m512d xi_x = _mm512_mask_i32gather_pd(zero, range, i2, d.x, 8);
     const __m512d xi_y = _mm512_mask_i32gather_pd(zero, range, i2, d.x + 1, 8);
