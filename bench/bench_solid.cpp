@@ -7,8 +7,9 @@
 //    layers, TL-SFPM, SVK, artificial viscosity and hourglass control on) in free vibration
 //    of its n = 2 mode, advanced by advance_body over 20 stable steps per iteration (the
 //    sub-step loop alone, no fluid). Arguments: case (0: 2 layers, 2 514 particles, r 0.3 m;
-//    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads. Case 2
-//    runs the wavefront schedule of the sub-steps (solid/elastic_substep.h, bodies of
+//    1: 4 layers, 10 052; 2: 6 layers, 60 000, r 0.8 m; 3 mm skin each), threads. All three
+//    run the two-pass schedule of the sub-steps with its pair loops in lanes on an AVX-512F
+//    CPU; elsewhere case 2 runs the wavefront schedule (solid/elastic_substep.h, bodies of
 //    >= 20 000 particles), cases 0 and 1 the two-pass one. The `band` counter (largest
 //    |i - j| of a pair in the stored order) is not what the wavefront needs: it runs over
 //    the pair graph's levels (solid/substep_levels.h).

@@ -128,6 +128,11 @@ M = [
   "((1u << hi) - 1u) & ~((1u << lo) - 1u)", "((1u << hi) - 2u) & ~((1u << lo) - 1u)"),
  ("sub-step lanes: the reverse pair's κ ε read at the pair's own slot", "src/solid/substep_pair_lanes_avx512.cpp",
   "_mm512_mask_i32gather_pd(zero, m, rp, d.keps_x, 8)", "_mm512_loadu_pd(d.keps_x + p)"),
+ # Session 19: where the lanes apply, Auto takes them before the wavefront at any size
+ # (caught on AVX-512F CPUs only, by the barrier count of the two-pass schedule).
+ ("sub-step: the wavefront taken before the lanes again", "src/solid/elastic_substep.cpp",
+  "kLanes || (lanes_go && schedule != SubstepSchedule::Wavefront)",
+  "kLanes || (false && lanes_go && schedule != SubstepSchedule::Wavefront)"),
  # Session 17: the step limit, the state check and the lists' displacement in the
  # integrator's sweeps (app/fsi_stepper.cpp last_sweep / drift_sweep).
  ("fused sweeps: step limit from v_half, not the new v", "src/app/fsi_stepper.cpp",

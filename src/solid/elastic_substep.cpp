@@ -186,17 +186,31 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   using simd::lo;
   using simd::v2d;
   const int threads = exec.threads_for(n, kSubstepParticlesPerThread);
-  // Sub-steps per block of the wavefront schedule, 0 for the two-pass one.
-  const int block = kEulerian || kLanes ? 0 : wavefront_block(body, steps, schedule);
   // Both passes' pair loops in eight lanes (two-pass schedule; the set-up then writes the
   // pair records in the ELL layout too, substep_pair_lanes.h) in their own instance: in this
   // one, a function of the scalar loops' size, GCC keeps inlining the law and the small
   // helpers (with both in one function, 7 % more instructions ran in the scalar loops). The
-  // lines above are idempotent.
+  // lines above are idempotent. Where the lanes apply they are taken before the wavefront
+  // (which runs the scalar loops), whatever the body's size, unless the wavefront is forced:
+  // on the 60 000-particle ring (BM_RingSubsteps case 2, main's wavefront against the
+  // two-pass schedule with the lanes, 14 alternated rounds under quiet.py, medians) 29.8 →
+  // 36.0 M particle-steps/s on 2 threads (per-round ratio 1.18, 13 of 14 rounds ≥ 1.11) and
+  // 16.2 → 17.0 on 1 thread (1.03, 0.96-1.16); docs/validation.md §6 "Solid sub-step",
+  // session 19. Without AVX-512F, with an Eulerian switch or in calls of fewer than
+  // kMinLaneSubsteps sub-steps the wavefront rule is unchanged.
+  bool lanes_go = false;
   if constexpr (!kEulerian && !kLanes) {
     const bool lanes_wanted = loop == SubstepPairLoop::Lanes ||
                               (loop == SubstepPairLoop::Auto && steps >= kMinLaneSubsteps);
-    if (block == 0 && lanes_wanted && substep_lanes_avx512_available()) {
+    lanes_go = lanes_wanted && substep_lanes_avx512_available();
+  }
+  // Sub-steps per block of the wavefront schedule, 0 for the two-pass one (a forced
+  // Wavefront keeps it where it applies, the lanes then run only where it falls back).
+  const int block = kEulerian || kLanes || (lanes_go && schedule != SubstepSchedule::Wavefront)
+                        ? 0
+                        : wavefront_block(body, steps, schedule);
+  if constexpr (!kEulerian && !kLanes) {
+    if (block == 0 && lanes_go) {
       substeps_with<Law, kHourglass, kViscous, false, true>(law, body, steps, h, g, exec,
                                                             SubstepSchedule::TwoPass, loop);
       return;

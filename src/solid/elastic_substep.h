@@ -46,7 +46,8 @@
 // one particle per lane, over a slot-major copy of the pair records
 // (solid/substep_pair_lanes.h; session 18); the law and the tails stay scalar; same bits.
 // Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
-// for large bodies without an Eulerian switch a wavefront over the pair graph's levels
+// for large bodies without an Eulerian switch where the lanes do not run (session 19: the
+// lanes are faster than the wavefront on 2 threads) a wavefront over the pair graph's levels
 // (solid/substep_levels.h), which advances a band of ~2 × block levels through up to 20
 // sub-steps while it is in the core's cache (2 barriers per block + 1 between blocks); the
 // per-sub-step powers are then summed in particle order after each block. Same bits
@@ -71,8 +72,11 @@ constexpr std::size_t kSubstepParticlesPerThread = 1000;
 
 // Bodies of at least this many particles take the wavefront schedule of the sub-steps
 // (elastic_substep.cpp) when it applies (no Eulerian switch, two or more sub-steps, a level
-// structure narrow enough for the cache); smaller ones the two-pass schedule. Both give the
-// same bits.
+// structure narrow enough for the cache) and the two-pass schedule's pair loops in lanes do
+// not (no AVX-512F, or calls of fewer than kMinLaneSubsteps sub-steps): where the lanes
+// apply, the two-pass schedule with them is taken at any size (60 000-particle ring, 2
+// threads: 1.18x the wavefront; docs/validation.md §6 "Solid sub-step", session 19).
+// Smaller bodies take the two-pass schedule. All give the same bits.
 constexpr std::size_t kSubstepWavefrontParticles = 20000;
 
 // Which schedule runs the sub-steps: Auto (by the rule above) or one forced (tests,

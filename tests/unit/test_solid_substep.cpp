@@ -255,17 +255,17 @@ TEST(ElasticSubstep, OneAndTwoThreadsBitIdentical) {
 
 namespace {
 
-// A spinning ring skin (ring_lattice, 5 layers, ~3 100 particles: a team of three) with a
-// moving clamp, gravity and a fluid force: the wavefront schedule's levels are its
-// cross-sections (~10 particles, two per layer).
-SolidBody loaded_ring(const ElasticMaterialInput& mat) {
+// A spinning ring skin (ring_lattice, 5 layers, inner radius r_in: at 0.3 m ~3 100
+// particles, a team of three) with a moving clamp, gravity and a fluid force: the wavefront
+// schedule's levels are its cross-sections (~10 particles, two per layer).
+SolidBody loaded_ring(const ElasticMaterialInput& mat, double r_in = 0.3) {
   const double dx = 0.003;
   std::vector<double> V0;
-  const std::vector<Vec2> X = ring_lattice(0.3, 5, dx, &V0);
+  const std::vector<Vec2> X = ring_lattice(r_in, 5, dx, &V0);
   BodySetup cfg;
   cfg.angular_velocity = 3.0;
   cfg.velocity = {0.5, -1.0};
-  cfg.clamp_boxes.push_back({{0.29, -0.01}, {0.33, 0.01}});
+  cfg.clamp_boxes.push_back({{r_in - 0.01, -0.01}, {r_in + 0.03, 0.01}});
   cfg.clamp_velocities.push_back({0.0, 0.2});
   SolidBody b = make_body(X, dx, "tl_sfpm", mat, cfg, V0);
   for (std::size_t i = 0; i < b.size(); ++i)
@@ -424,4 +424,43 @@ TEST(ElasticSubstep, PairLanesBitIdenticalToScalarHourglassViscousOnOff) {
       }
       EXPECT_GT(norm(ref.x.back() - ref.X.back()), 0.0);
     }
+}
+
+// The schedule rule (elastic_substep.h, session 19): a body of kSubstepWavefrontParticles or
+// more takes the two-pass schedule with the pair loops in lanes where they apply (AVX-512F,
+// calls of kMinLaneSubsteps sub-steps or more), else the wavefront. A ring of ~20 900
+// particles: calls of 9 and 8 sub-steps under Auto on 1 and 2 threads give the bits of the
+// forced (scalar) wavefront, and on 2 threads take 2 barriers per sub-step + 1 (the two-pass
+// schedule) with the lanes, fewer (the wavefront: 2 per block + 1 between blocks) without; a
+// call of 4 sub-steps takes the wavefront either way.
+TEST(ElasticSubstep, AutoTakesLanesBeforeWavefrontOnLargeBody) {
+  const SolidBody body = loaded_ring(plate_material(0.5, 1.0), 2.0);
+  ASSERT_GE(body.size(), kSubstepWavefrontParticles);
+  const double h = 0.5 * stable_time_step(body);
+  const int calls[] = {9, 8, 4};
+  SolidBody ref = body;
+  for (int steps : calls)
+    run_elastic_substeps(ref, steps, h, {0.0, -9.81}, Executor(1), SubstepSchedule::Wavefront);
+  expect_moved(ref);
+  const bool lanes = substep_lanes_avx512_available();
+  if (!lanes) std::printf("no AVX-512F: Auto takes the wavefront\n");
+  for (int threads = 1; threads <= 2; ++threads) {
+    SolidBody b = body;
+    const Executor exec(threads);
+    for (int steps : calls) {
+      const SyncCounts before = exec.sync_counts();
+      run_elastic_substeps(b, steps, h, {0.0, -9.81}, exec);
+      if (threads == 2) {
+        const std::uint64_t barriers = exec.sync_counts().barriers - before.barriers;
+        const std::uint64_t two_pass = 2u * static_cast<std::uint64_t>(steps) + 1u;
+        SCOPED_TRACE(steps);
+        if (lanes && steps >= kMinLaneSubsteps)
+          EXPECT_EQ(barriers, two_pass);
+        else
+          EXPECT_LT(barriers, two_pass);  // one block of the wavefront: 2
+      }
+    }
+    SCOPED_TRACE(threads);
+    expect_identical(b, ref);
+  }
 }
