@@ -133,6 +133,10 @@ M = [
  ("sub-step: the wavefront taken before the lanes again", "src/solid/elastic_substep.cpp",
   "kLanes || (lanes_go && schedule != SubstepSchedule::Wavefront)",
   "kLanes || (false && lanes_go && schedule != SubstepSchedule::Wavefront)"),
+ # Session 19: the SVK law of pass 1 in the lanes (caught on AVX-512F CPUs only).
+ ("sub-step lanes: SVK's lambda tr E left out of S_yy", "src/solid/substep_law_lanes_avx512.cpp",
+  "const __m512d Syy = _mm512_add_pd(_mm512_mul_pd(Eyy, two_mu), l);",
+  "const __m512d Syy = _mm512_mul_pd(Eyy, two_mu);"),
  # Session 17: the step limit, the state check and the lists' displacement in the
  # integrator's sweeps (app/fsi_stepper.cpp last_sweep / drift_sweep).
  ("fused sweeps: step limit from v_half, not the new v", "src/app/fsi_stepper.cpp",

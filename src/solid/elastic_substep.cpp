@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -11,7 +12,9 @@
 #include "solid/artificial_viscosity.h"
 #include "solid/eulerian_failed_interaction.h"
 #include "solid/hourglass_control.h"
+#include "solid/materials/st_venant_kirchhoff.h"
 #include "solid/stress_update.h"
+#include "solid/substep_law_lanes.h"
 #include "solid/substep_levels.h"
 #include "solid/substep_pair_lanes.h"
 
@@ -502,15 +505,33 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
                                       kHourglass,
                                       kViscous};
     SubstepLane1Sums sums1;
+    // SVK: the law, the stress power and V0 P in the lanes too (substep_law_lanes.h, session
+    // 19); other laws per particle (pass1_law).
+    constexpr bool svk_lanes = std::is_same_v<Law, StVenantKirchhoff> && !kEulerian;
+    SubstepSvkLaneData svk_data{0.0,
+                                0.0,
+                                V0,
+                                rho0,
+                                reinterpret_cast<double*>(Fb),
+                                reinterpret_cast<double*>(Pb),
+                                stress_power,
+                                reinterpret_cast<double*>(mats)};
+    if constexpr (svk_lanes) {
+      svk_data.lambda = law.parameters().lambda;
+      svk_data.mu = law.parameters().mu;
+    }
     auto pass1_lanes = [&](std::size_t base, std::size_t i0, std::size_t i1) {
       substep_lanes_avx512_pass1(lane1_data, base, i0, i1, sums1);
+      if constexpr (svk_lanes) substep_lanes_avx512_svk(svk_data, base, i0, i1, sums1);
       for (std::size_t i = i0; i < i1; ++i) {
         const std::size_t o = i - base;
-        // Columns: c0 = (xx, yx), c1 = (xy, yy).
-        const simd::Cols Fc{v2d{sums1.F[0][o], sums1.F[2][o]}, v2d{sums1.F[1][o], sums1.F[3][o]}};
-        const simd::Cols Fdc{v2d{sums1.Fd[0][o], sums1.Fd[2][o]},
-                             v2d{sums1.Fd[1][o], sums1.Fd[3][o]}};
-        pass1_law(i, Fc, Fdc);
+        if constexpr (!svk_lanes) {
+          // Columns: c0 = (xx, yx), c1 = (xy, yy).
+          const simd::Cols Fc{v2d{sums1.F[0][o], sums1.F[2][o]}, v2d{sums1.F[1][o], sums1.F[3][o]}};
+          const simd::Cols Fdc{v2d{sums1.Fd[0][o], sums1.Fd[2][o]},
+                               v2d{sums1.Fd[1][o], sums1.Fd[3][o]}};
+          pass1_law(i, Fc, Fdc);
+        }
         if constexpr (kViscous) {
           ell.fav[i] = Vec2{sums1.fav_x[o], sums1.fav_y[o]};
           ell.heat[i] = sums1.heat[o];

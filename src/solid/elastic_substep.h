@@ -44,7 +44,9 @@
 // storage changes (docs/validation.md, "Solid sub-step").
 // On CPUs with AVX-512F the two-pass schedule runs both passes' pair loops in eight lanes,
 // one particle per lane, over a slot-major copy of the pair records
-// (solid/substep_pair_lanes.h; session 18); the law and the tails stay scalar; same bits.
+// (solid/substep_pair_lanes.h; session 18), then, for SVK, the law, the stress power and
+// V0 P in the same lanes (solid/substep_law_lanes.h; session 19); other laws and the tails
+// stay scalar; same bits.
 // Two schedules run these per-particle steps (SubstepSchedule): the two-pass one above, and
 // for large bodies without an Eulerian switch where the lanes do not run (session 19: the
 // lanes are faster than the wavefront on 2 threads) a wavefront over the pair graph's levels

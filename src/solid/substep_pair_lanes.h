@@ -3,7 +3,8 @@
 // (solid/substep_pair_lanes_avx512.cpp, the only file of this domain built with -mavx512f,
 // chosen at run time; elsewhere, in the wavefront schedule and with an Eulerian switch the
 // scalar loops run, so the binary still runs on any x86-64). Per particle the law, the
-// stress power and pass 2's tail stay scalar, run by the caller after each chunk.
+// stress power and pass 2's tail stay scalar, run by the caller after each chunk (since
+// session 19 the SVK law, its stress power and V0 P in lanes too: solid/substep_law_lanes.h).
 //
 // Layout (ELL, slot-major): the particles in blocks of eight consecutive ones; block b holds
 // S_b slots (the largest pair count of its particles), slot s of lane l (particle 8b + l)
@@ -56,7 +57,7 @@ struct SubstepLaneSums {
 // g_ij), the sums of the viscous pair terms (every pair from i's side, so nothing is written
 // to j's slots: the sums pass 2 would form, bit for bit; substep_pair_lanes_avx512.cpp),
 // then κ ε per pair and the hourglass moment G = Σ κ ε ⊗ X_ij. The law, the stress power and
-// V0 P stay scalar (the caller, per particle, after each call).
+// V0 P follow per particle in the caller after each call (SVK: substep_law_lanes.h).
 struct SubstepLane1Data {
   const std::uint32_t* off;
   const std::uint8_t* mask;
