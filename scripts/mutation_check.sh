@@ -137,6 +137,12 @@ M = [
  ("sub-step lanes: SVK's lambda tr E left out of S_yy", "src/solid/substep_law_lanes_avx512.cpp",
   "const __m512d Syy = _mm512_add_pd(_mm512_mul_pd(Eyy, two_mu), l);",
   "const __m512d Syy = _mm512_mul_pd(Eyy, two_mu);"),
+ # Session 19: the lists' distance test in eight lanes (caught on AVX-512F CPUs only).
+ ("lists' lanes: pairs exactly at the radius kept", "src/core/candidate_lanes_avx512.cpp",
+  "_mm512_cmp_pd_mask(d2, lim, _CMP_LT_OQ)", "_mm512_cmp_pd_mask(d2, lim, _CMP_LE_OQ)"),
+ ("lists' lanes: the candidate's index one too high", "src/core/candidate_lanes_avx512.cpp",
+  "_mm512_set_epi32(0, 0, 0, 0, 0, 0, 0, 0, 7, 6, 5, 4, 3, 2, 1, 0)",
+  "_mm512_set_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 7, 6, 5, 4, 3, 2, 1)"),
  # Session 17: the step limit, the state check and the lists' displacement in the
  # integrator's sweeps (app/fsi_stepper.cpp last_sweep / drift_sweep).
  ("fused sweeps: step limit from v_half, not the new v", "src/app/fsi_stepper.cpp",

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/candidate_lanes.h"
 #include "core/parallel.h"
 
 namespace slamsph {
@@ -48,10 +49,11 @@ void CellGrid::renumber_in_cell_order() {
 namespace {
 
 // CSR lists over n queries: runs(i, run) calls run(b, e) for each run of candidates of query i
-// (their number bounds its list), visit(i, emit) calls emit(j) for every neighbour j of query
-// i, in list order. The candidates are tested once: each query fills its part of a scratch
-// array as long as its candidates, then the lists are packed (the tests done once instead of
-// counting first and filling after, docs/validation.md §6 Session 14).
+// (their number bounds its list), visit(i, dst) writes every neighbour j of query i at dst in
+// list order (`*dst++ = j`; dst may hold as many entries as the query has candidates). The
+// candidates are tested once: each query fills its part of a scratch array as long as its
+// candidates, then the lists are packed (the tests done once instead of counting first and
+// filling after, docs/validation.md §6 Session 14).
 template <class Runs, class Visit>
 void csr_lists(std::size_t n, Runs runs, Visit visit, const Executor& exec, NeighbourList& out) {
   std::vector<std::uint32_t>& part = out.scratch_start;
@@ -68,7 +70,7 @@ void csr_lists(std::size_t n, Runs runs, Visit visit, const Executor& exec, Neig
   // contact candidates, one far from it none (the fluid–contact lists).
   exec.for_each_weighted(n, part.data(), [&](std::size_t i) {
     std::uint32_t* dst = out.scratch.data() + part[i];
-    visit(i, [&dst](std::uint32_t j) { *dst++ = j; });
+    visit(i, dst);
     out.start[i + 1] = static_cast<std::uint32_t>(dst - (out.scratch.data() + part[i]));
   });
   for (std::size_t i = 0; i < n; ++i) out.start[i + 1] += out.start[i];
@@ -88,10 +90,10 @@ void build_lists(std::span<const Vec2> queries, std::span<const Vec2> pts, const
   csr_lists(
       queries.size(),
       [&](std::size_t i, auto&& run) { grid.for_each_candidate_run(queries[i], run); },
-      [&](std::size_t i, auto&& emit) {
+      [&](std::size_t i, std::uint32_t*& dst) {
         const Vec2 q = queries[i];
         grid.for_each_candidate(q, [&](std::uint32_t j) {
-          if (accept(i, j) && norm2(q - pts[j]) < r2) emit(j);
+          if (accept(i, j) && norm2(q - pts[j]) < r2) *dst++ = j;
         });
       },
       exec, out);
@@ -122,16 +124,26 @@ void build_banded_pairs(std::span<const Vec2> pts, const CellGrid& grid, double 
   if (in_cell_order) {
     // The same lists, in the same order, from the cells that can hold a later point
     // (CellGrid::for_each_later_candidate): half the candidates of the 3x3 search.
+    // In cell order a run of candidates is a run of consecutive points: tested eight at a time
+    // where the CPU has AVX-512F (core/candidate_lanes.h; the same lists).
     const double r2 = radius * radius;
+    const bool lanes = candidate_lanes_avx512_available();
     csr_lists(
         n,
         [&](std::size_t i, auto&& run) {
           grid.for_each_later_candidate_run(static_cast<std::uint32_t>(i), pts[i], run);
         },
-        [&](std::size_t i, auto&& emit) {
+        [&](std::size_t i, std::uint32_t*& dst) {
           const Vec2 q = pts[i];
+          if (lanes) {
+            grid.for_each_later_candidate_run(
+                static_cast<std::uint32_t>(i), q, [&](std::uint32_t b, std::uint32_t e) {
+                  if (e > b) dst = candidates_within_avx512(pts.data(), b, e, q, r2, dst);
+                });
+            return;
+          }
           grid.for_each_later_candidate(static_cast<std::uint32_t>(i), q, [&](std::uint32_t j) {
-            if (norm2(q - pts[j]) < r2) emit(j);
+            if (norm2(q - pts[j]) < r2) *dst++ = j;
           });
         },
         exec, out.half);

@@ -95,6 +95,46 @@ TEST(CellGrid, BandedPairsHoldEachPairOnceWithinAdjacentBands) {
   EXPECT_GT(pairs, 10000u);
 }
 
+// In cell order the lists' distance test runs in eight lanes where the CPU has AVX-512F
+// (core/candidate_lanes.h): the lists must be the scalar test's, entry for entry, in order —
+// with pairs exactly at the radius (a lattice of spacing 1/4, whose distances are exact) left
+// out by both, runs of candidates longer and shorter than eight, and any thread count.
+TEST(CellGrid, BandedPairsLanesEqualTheScalarTest) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  std::vector<Vec2> pts;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 60; ++x) {
+      Vec2 p{0.25 * x, 0.25 * y};
+      if ((x + 3 * y) % 4 == 0) p += Vec2{u(rng), u(rng)};  // a quarter off the lattice
+      pts.push_back(p);
+    }
+  const double radius = 1.0;
+  CellGrid grid;
+  grid.build(pts, radius);
+  std::vector<Vec2> sorted(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) sorted[k] = pts[grid.cell_order()[k]];
+  grid.build(sorted, radius);
+  // The scalar test, candidate by candidate (cell_grid.cpp without the lanes).
+  std::vector<std::uint32_t> start{0}, index;
+  std::size_t on_radius = 0;
+  for (std::uint32_t i = 0; i < sorted.size(); ++i) {
+    grid.for_each_later_candidate(i, sorted[i], [&](std::uint32_t j) {
+      const double d2 = norm2(sorted[i] - sorted[j]);
+      if (d2 < radius * radius) index.push_back(j);
+      if (d2 == radius * radius) ++on_radius;
+    });
+    start.push_back(static_cast<std::uint32_t>(index.size()));
+  }
+  ASSERT_GT(on_radius, 1000u);
+  for (int threads : {1, 2, 3}) {
+    BandedPairs out;
+    build_banded_pairs(sorted, grid, radius, Executor(threads), out);
+    EXPECT_EQ(out.half.start, start) << threads << " threads";
+    EXPECT_EQ(out.half.index, index) << threads << " threads";
+  }
+}
+
 // The grid renumbered after permuting its points into cell order bins them exactly as a new
 // build would (InteractionLists::update keeps it instead of binning the fluid twice per
 // rebuild): the same cell order and the same candidate runs for every point.
