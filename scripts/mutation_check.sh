@@ -16,6 +16,7 @@
 # tests (the water's pass beside small bodies' sub-steps), and (session 17) the executor's
 # tests (the learnt split of weighted loops), the step limit found in the integrator's last
 # sweep and the diverging runs' messages (session 18: also the last sweep inside the pass).
+# Session 19: the lists' distance test in lanes (test_core_cell_grid).
 # Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -26,7 +27,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence test_core_cell_grid"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
