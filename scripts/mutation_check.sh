@@ -138,6 +138,12 @@ M = [
  ("sub-step lanes: SVK's lambda tr E left out of S_yy", "src/solid/substep_law_lanes_avx512.cpp",
   "const __m512d Syy = _mm512_add_pd(_mm512_mul_pd(Eyy, two_mu), l);",
   "const __m512d Syy = _mm512_mul_pd(Eyy, two_mu);"),
+ # Session 20: for_alternating's bands kept on the core of their sweep share.
+ ("band shares: every thread starts at share 0", "src/core/band_shares.h",
+  "const int own = rank % shares_;", "const int own = 0 * rank;"),
+ ("band shares: a steal takes the front, not the back", "src/core/band_shares.h",
+  "if (const std::size_t k = take((own + d) % shares_, false); k != count_) return k;",
+  "if (const std::size_t k = take((own + d) % shares_, true); k != count_) return k;"),
  # Session 19: the lists' distance test in eight lanes (caught on AVX-512F CPUs only).
  ("lists' lanes: pairs exactly at the radius kept", "src/core/candidate_lanes_avx512.cpp",
   "_mm512_cmp_pd_mask(d2, lim, _CMP_LT_OQ)", "_mm512_cmp_pd_mask(d2, lim, _CMP_LE_OQ)"),

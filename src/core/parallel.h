@@ -33,6 +33,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/band_shares.h"
+
 namespace slamsph {
 
 class ThreadPool;  // parallel.cpp: the worker threads and their spin-then-sleep waiting
@@ -248,8 +250,15 @@ class Executor {
   // f(b) for every band b in [0, n): first the even bands, in parallel, then the odd ones.
   // For pair loops over banded particles (core/cell_grid.h, BandedPairs) in which the task of
   // band b writes only to bands b and b + 1: tasks running together write disjoint data, and
-  // every particle receives its contributions in the same order for any thread count. The
-  // bands of one parity are handed out one at a time (their costs differ).
+  // every particle receives its contributions in the same order for any thread count.
+  // Each thread first takes the bands of its own contiguous share, from the front, and then
+  // takes what is left of the others' from their back (their costs differ). So a band stays
+  // with the core whose share of the particles the sweeps between the passes (for_each,
+  // maxima_of: the same contiguous shares) write: handed out one at a time to whichever
+  // thread asked, half the bands went to the other core, and every pass and sweep first
+  // fetched those lines from the other core's cache (the 3 200-particle dam break on 2
+  // threads: the integrator's three sweeps 2.4x their 1-thread time; docs/validation.md §6,
+  // Session 20).
   template <class F>
   void for_alternating(std::size_t n, F&& f) const {
     for (std::size_t parity = 0; parity < 2; ++parity) {
@@ -259,10 +268,9 @@ class Executor {
         for (std::size_t k = 0; k < count; ++k) f(2 * k + parity);
         continue;
       }
-      std::atomic<std::size_t> next{0};
-      region(t, [&](int) {
-        for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < count;)
-          f(2 * k + parity);
+      BandShares shares(count, t);
+      region(t, [&](int rank) {
+        for (std::size_t k; (k = shares.next(rank)) < count;) f(2 * k + parity);
       });
     }
   }

@@ -58,6 +58,45 @@ TEST(Executor, LoopsGiveTheSameAnswerOnAnyThreadCount) {
             -5.0);
 }
 
+// for_alternating's band shares (core/band_shares.h): a thread takes its own contiguous share
+// from the front, then the others' remainders from their back, so that a band stays on the
+// core whose sweep share holds its particles; every index is handed out exactly once, also
+// with many threads claiming at once and with more threads than shares.
+TEST(BandShares, OwnShareFromTheFrontThenTheOthersFromTheirBack) {
+  BandShares two(10, 2);  // shares [0, 5) and [5, 10)
+  std::vector<std::size_t> got;
+  for (std::size_t k; (k = two.next(1)) < 10;) got.push_back(k);
+  EXPECT_EQ(got, (std::vector<std::size_t>{5, 6, 7, 8, 9, 4, 3, 2, 1, 0}));
+  EXPECT_EQ(two.next(0), 10u);
+  BandShares three(7, 3);  // [0, 2), [2, 4), [4, 7)
+  EXPECT_EQ(three.next(0), 0u);
+  EXPECT_EQ(three.next(2), 4u);
+  EXPECT_EQ(three.next(1), 2u);
+  EXPECT_EQ(three.next(1), 3u);
+  EXPECT_EQ(three.next(1), 6u);  // share 2's back
+  EXPECT_EQ(three.next(1), 5u);
+  EXPECT_EQ(three.next(1), 1u);  // then share 0's back
+  EXPECT_EQ(three.next(1), 7u);  // none left
+  EXPECT_EQ(BandShares(0, 4).next(3), 0u);
+}
+
+TEST(BandShares, EveryIndexOnceUnderConcurrentClaims) {
+  for (int threads : {2, 3, 5, BandShares::kMaxShares + 6}) {
+    for (std::size_t count : {std::size_t{1}, std::size_t{3}, std::size_t{64}, std::size_t{5001}}) {
+      BandShares shares(count, threads);
+      std::vector<std::atomic<int>> hits(count);
+      std::vector<std::thread> team;
+      for (int r = 0; r < threads; ++r)
+        team.emplace_back([&, r] {
+          for (std::size_t k; (k = shares.next(r)) < count;) hits[k].fetch_add(1);
+        });
+      for (std::thread& t : team) t.join();
+      for (std::size_t k = 0; k < count; ++k)
+        ASSERT_EQ(hits[k].load(), 1) << threads << " threads, " << count << " bands, band " << k;
+    }
+  }
+}
+
 // maxima_of (app/fsi_stepper.cpp's fused sweeps): each component is max_of's, on any thread
 // count, NaN never taken and init for an empty range; g runs once per item, so it may write
 // item i's own entries on the way.
