@@ -129,8 +129,15 @@ bool FsiStepper::evaluate_rates(PhaseClock& clock, PhaseTimes& t, RatePass pass,
     for (const Vec2& f : sys_.bodies[b].f_fluid) load.total += f;
     loads_[b] = load;
   }
-  for (std::size_t c = 0; c < contact.size(); ++c)
-    loads_[contact.body[c]].viscous += contact.force_viscous[c];
+  // Summed in a register over each run of one body's contact particles, in the same order
+  // as one at a time through loads_ (that was a store-to-load chain: 2 % of the main
+  // thread's samples in the 3 200-particle dam break on 2 threads, all of it serial).
+  for (std::size_t c = 0; c < contact.size();) {
+    const auto b = contact.body[c];
+    Vec2 viscous = loads_[b].viscous;
+    for (; c < contact.size() && contact.body[c] == b; ++c) viscous += contact.force_viscous[c];
+    loads_[b].viscous = viscous;
+  }
   clock.lap(t.contact);
   return fused;
 }
