@@ -245,11 +245,25 @@ TEST(CostModel, JohnsonCookBarYieldAndFailureFromTheLoading) {
   EXPECT_NEAR(b.yield_fraction / y.fraction, 1.0, 0.5);
   EXPECT_GT(b.damage_start, 0.5 * y.first_failure);
   EXPECT_LT(b.damage_start, 2.0 * y.first_failure);
-  // Their cost: the yielding particle-sub-steps and the failure zone's gathers.
-  EXPECT_GT(b.failure_seconds, 0.0);
-  const double subs = static_cast<double>(p.solid_substeps);
+  // Their cost: the yielding particle-sub-steps (in the solid phase) and the failure zone's
+  // gathers from the damage on (in the contact phase), against the same prediction without
+  // those costs.
+  CostConstants k0;
+  k0.johnson_cook_yield_ns = 0.0;
+  k0.failure_zone_ns = 0.0;
+  const CostPrediction p0 = predict_cost(sim, k0);
+  const CostConstants k;
   const double n = static_cast<double>(b.particles);
-  EXPECT_GT(b.seconds, 1e-9 * n * subs * b.yield_fraction * CostConstants{}.johnson_cook_yield_ns);
+  const double steps = static_cast<double>(p.fluid_steps);
+  const double T = cfg.numerics.end_time;
+  EXPECT_NEAR(
+      p.solid_seconds - p0.solid_seconds,
+      1e-9 * k.johnson_cook_yield_ns * n * static_cast<double>(p.solid_substeps) * b.yield_fraction,
+      1e-12);
+  EXPECT_NEAR(p.contact_seconds - p0.contact_seconds,
+              1e-9 * k.failure_zone_ns * n * steps * (T - b.damage_start) / T, 1e-12);
+  EXPECT_GT(p.contact_seconds - p0.contact_seconds, 0.0);
+  EXPECT_GT(p.solid_seconds - p0.solid_seconds, 0.0);
 }
 
 // The notched specimen pulled at ±1 m/s over its 30 mm gauge (67 /s, slow against its
