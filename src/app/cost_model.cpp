@@ -450,13 +450,13 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
                         ? 1.0
                         : log_interpolate(nw, k.fluid_n_small, k.fluid_n_large,
                                           k.fluid_speedup_small, k.fluid_speedup_large);
-  // Field snapshots: every water and elastic-body particle drawn and tabled, on one thread.
-  double drawn = nw;
-  for (const BodyCost& bc : c.bodies)
-    if (bc.elastic) drawn += static_cast<double>(bc.particles);
+  // Field snapshots (and the skin's profile with them), drawn on one thread.
   for (double t : cfg.output.snapshots)
     if (t <= num.end_time * (1.0 + 1e-12)) ++c.snapshots;
-  c.output_seconds = 1e-9 * k.snapshot_ns * drawn * c.snapshots;
+  const bool profile = !cfg.output.skin_profile.empty() && cfg.output.skin_profile != "none";
+  c.output_seconds = c.snapshots * (k.snapshot_s + (profile ? k.skin_profile_s : 0.0));
+  // The sub-steps of a run with water share the caches with it (see CostConstants).
+  const double wet = c.fluid_particles > 0 ? k.solid_wet_factor : 1.0;
   const Executor two(2);
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     BodyCost& bc = c.bodies[i];
@@ -484,7 +484,7 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
                                    : 1e-9 * static_cast<double>(bc.pairs) * subs *
                                          log_interpolate(n, k.solid_n_small, k.solid_n_large,
                                                          k.solid_pair_ns, k.solid_pair_ns_large);
-    bc.seconds = sub_seconds + 1e-9 * k.solid_call_ns * n * calls * steps;
+    bc.seconds = wet * sub_seconds + 1e-9 * k.solid_call_ns * n * calls * steps;
     if (bc.johnson_cook) {
       const PlasticEstimate pe = estimate_plastic(
           body, std::get<JohnsonCook>(body.material.law).parameters().jc, num.end_time);
@@ -712,9 +712,9 @@ std::string describe_cost(const CostPrediction& c, int threads) {
     std::snprintf(
         buf, sizeof buf,
         "    estimated from the loading (%s): starts to yield %s, yields in %.0f %% of its "
-        "particle-sub-steps, fails %s (failure zone %.3g s)\n",
+        "particle-sub-steps, fails %s (its cost: the solid and contact phases below)\n",
         b.loading.c_str(), at(b.yield_start).c_str(), 100.0 * b.yield_fraction,
-        at(b.damage_start).c_str(), b.failure_seconds);
+        at(b.damage_start).c_str());
     s += buf;
   }
   std::snprintf(buf, sizeof buf,

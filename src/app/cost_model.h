@@ -52,17 +52,19 @@
 //             and Eulerian bodies run the scalar loops, c_pair P_b per sub-step over P_b pair
 //             entries (each pair from both sides; the plate and the ring 18.0 and 16.8 ns per
 //             entry before the lanes, session 13). c_sub log-linear in N_b between 25 000 and
-//             60 000 particles, where the arrays leave the caches. c_call the per-call set-up
-//             of the sub-step loop, solid/elastic_substep.cpp, per particle. c_jc the
-//             Johnson–Cook law's elastic path per particle-sub-step, c_yield the return
-//             mapping of a yielding particle, f_y the fraction of its particle-sub-steps that
-//             yield, estimated from the body's loading (below)
+//             60 000 particles, where the arrays leave the caches; 1.24x with water (the
+//             water's arrays share the caches: whole runs against the body alone). c_call the
+//             per-call set-up of the sub-step loop, solid/elastic_substep.cpp, per particle. c_jc
+//             the Johnson–Cook law's elastic path per particle-sub-step, c_yield the return mapping
+//             of a yielding particle, f_y the fraction of its particle-sub-steps that yield,
+//             estimated from the body's loading (below)
 //   failure = c_fail N_b per fluid step once a body with failure has failed particles: every
 //             gather of its state rebuilds a cell grid over the body, the normals near the
 //             failed particles and the layers behind the crack faces (coupling/
 //             contact_layout.cpp gather_body_state); in the contact phase
-//   output  = c_snap (N_water + N_elastic) per field snapshot within the run (drawn on one
-//             thread; the fuselage sections' two snapshots to 10 ms took ~1.1 s of 7.4)
+//   output  = c_snap per field snapshot within the run, c_profile more with the skin's
+//             profile (drawn at a fixed size, on one thread; the fuselage sections' two
+//             snapshots to 10 ms took ~1.1 s of 7.4)
 // Yield and damage from the loading (Johnson–Cook bodies held by clamps; estimate_plastic in
 // app/cost_model.cpp): the clamps' velocity against the free material's initial velocity
 // Δv, against v_y = σ_y/(ρ c) the particle velocity an elastic wave can carry (c the
@@ -103,7 +105,10 @@ class Simulation;
 // session 10 the probes had measured this machine at x0.53-0.6 of them while its whole runs
 // went at x0.7-1.0 (the water probe is mostly the pair pass, which the lanes made faster
 // than the rest), and the peer dam break, the tension bar and the Johnson-Cook bar fell
-// 28-39 % under their predictions on 2 threads.
+// 28-39 % under their predictions on 2 threads. Session 20 measured the solid constants anew
+// on this machine (the sub-step's pair loops and SVK law in AVX-512 lanes since sessions
+// 18-19, the skins' ring as the probe; the Johnson–Cook law's, yield and failure costs from
+// benchmarks and alternated runs; below).
 // Two-thread speed-ups: docs/validation.md §6 (throughput.sh, BM_RingSubsteps, idle).
 struct CostConstants {
   // Per listed water–water pair per fluid step, at ≤ water_n_small / ≥ water_n_large water
@@ -137,17 +142,16 @@ struct CostConstants {
   // above are the session 18 fit's.
   // Per elastic particle per sub-step (SVK) in a call that runs the pair loops in lanes (at
   // least kMinLaneSubsteps sub-steps, AVX-512F, no Eulerian switch), ≤ solid_n_small
-  // particles, in whole runs with water: skin_cylinder to 10 ms on one thread 28.9 ns (4.84 s
-  // over 67 106 sub-steps of 2 500 particles), skin_L_floor_column 29.4 ns (14.13 s, 88 558
-  // sub-steps of 5 434). Alone, without water to share the caches, the sub-steps run ~10 %
-  // faster: BM_RingSubsteps case 0 (2 514 particles, 3.0 pair entries each, 20 sub-steps per
-  // call) 37.9-38.3 M particle-steps/s = 26.4 ns, the 2 000-particle plate of session 18's
-  // probe (3.88 entries) 25.9 ns (its factor x0.31 of 21.5 ns per entry): per particle, not
-  // per entry, in the lanes. The probe ring (measure_machine_factors) measures x0.9 of this.
-  double solid_lane_ns = 29.0;
+  // particles, the body alone: the probe ring (measure_machine_factors, the skins' 2-layer
+  // ring, no hourglass control) x0.79-0.85 of 29 ns in the 40 checks of session 20's table
+  // = 23.5 ns; BM_RingSubsteps case 0 (the same ring with hourglass control and viscosity,
+  // 20 sub-steps per call) 37.9-38.3 M particle-steps/s = 26.4 ns; the 2 000-particle plate
+  // of session 18's probe (3.88 pair entries per particle against the ring's 3.0) 25.9 ns (its
+  // factor x0.31 of 21.5 ns per entry): per particle, not per entry, in the lanes.
+  double solid_lane_ns = 23.5;
   // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3. Kept at
   // the ratio of session 18's per-entry constants (24 / 21.5); not re-measured with the lanes.
-  double solid_lane_ns_large = 32.4;
+  double solid_lane_ns_large = 26.2;
   // Per elastic pair entry per sub-step (SVK) in the scalar pair loops (calls of fewer than
   // kMinLaneSubsteps sub-steps, CPUs without AVX-512F, Eulerian bodies), ≤ solid_n_small
   // particles: the probe ring's calls of 7 and of 1 sub-step (measure_machine_factors),
@@ -157,6 +161,13 @@ struct CostConstants {
   // ring 1.69x the 10 052 one per entry on one thread, 1.45-1.55x less with the wavefront of
   // session 15).
   double solid_pair_ns_large = 16.2;
+  // The sub-steps in a run with water against the body alone (both pair loops): the water's
+  // arrays share the caches with the body's between sub-step calls, and the body's state is
+  // gathered and its fluid forces scattered. skin_cylinder to 10 ms on one thread (session
+  // 20, quiet.py) 28.9 ns per particle-sub-step (4.84 s over 67 106 sub-steps of 2 500
+  // particles), skin_L_floor_column 29.4 ns (14.13 s, 88 558 sub-steps of 5 434), against
+  // the probe ring's 23.5: 1.24.
+  double solid_wet_factor = 1.24;
   // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
   // with the symplectic step): the probe ring's one-sub-step call less its scalar sub-step;
   // session 20, CALL. Scaled by its own machine factor.
@@ -183,13 +194,15 @@ struct CostConstants {
   // end) against 0.018 s with `materials.al.failure = "none"`, over 1 530 steps of 1 050
   // particles from 11.7 µs of 150 µs: 36 ns.
   double failure_zone_ns = 36.0;
-  // Per water or elastic-body particle per field snapshot (output.snapshots: the picture and
-  // its table, app/snapshots.h; with output.skin_profile the skin's profile too), on one
-  // thread whatever the run's threads: skin_cylinder to 2 ms with snapshots at 1 and 2 ms on
-  // 2 threads (session 20, quiet.py): "other" 1.10-1.12 s of 2.38-2.55 s, against ~0.1 s for
-  // the rest of the set-up and records (the 10 ms slice's 1.22 s with two snapshots), for
-  // 169 000 particles: 3.0 µs. Not scaled: no probe measures output.
-  double snapshot_ns = 3000.0;
+  // Per field snapshot (output.snapshots: the picture and its table, app/snapshots.h), and per
+  // snapshot of the skin's profile (output.skin_profile) [s], whatever the run's threads and
+  // nearly whatever its size (the picture is drawn at a fixed size): summary.json "other"
+  // (set-up, records, output) of session 20's 2-thread runs under quiet.py, less ~0.05-0.1 s
+  // without snapshots: cases/breached_plate.toml 1.0 s with 3 snapshots (0.32 s each),
+  // cases/skin_ring_reduced.toml 1.75 s with 3 and the profile (0.58 s each: 33 250 water
+  // particles), skin_cylinder to 2 ms with 2 and the profile 1.10-1.12 s (0.55 s each: 166 500
+  // water particles). Not scaled: no probe measures output.
+  double snapshot_s = 0.32, skin_profile_s = 0.24;
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
   // continuity pass) against a kick-drift-kick one, water and contact phases: dam break,
   // 7 131 steps either way, user CPU 12.5 against 9.1 s (docs/validation.md §6).
