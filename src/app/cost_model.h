@@ -143,7 +143,7 @@ struct CostConstants {
   // Per elastic particle per sub-step (SVK) in a call that runs the pair loops in lanes (at
   // least kMinLaneSubsteps sub-steps, AVX-512F, no Eulerian switch), ≤ solid_n_small
   // particles, the body alone: the probe ring (measure_machine_factors, the skins' 2-layer
-  // ring, no hourglass control) x0.79-0.85 of 29 ns in the 40 checks of session 20's table
+  // ring, no hourglass control) x0.79-0.85 of 29 ns in the first round of session 20's table
   // = 23.5 ns; BM_RingSubsteps case 0 (the same ring with hourglass control and viscosity,
   // 20 sub-steps per call) 37.9-38.3 M particle-steps/s = 26.4 ns; the 2 000-particle plate
   // of session 18's probe (3.88 pair entries per particle against the ring's 3.0) 25.9 ns (its
@@ -155,7 +155,8 @@ struct CostConstants {
   // Per elastic pair entry per sub-step (SVK) in the scalar pair loops (calls of fewer than
   // kMinLaneSubsteps sub-steps, CPUs without AVX-512F, Eulerian bodies), ≤ solid_n_small
   // particles: the probe ring's calls of 7 and of 1 sub-step (measure_machine_factors),
-  // their difference over 6 sub-steps; session 20, SCALAR_PAIR.
+  // their difference over 6 sub-steps (session 20, three checks under quiet.py: x1.4-1.5 of a
+  // trial 10 ns = 14.5 ns per entry, 43.5 ns per particle at the ring's 3.0 entries).
   double solid_pair_ns = 14.5;
   // ≥ solid_n_large particles, the same ratio as the lanes' (session 13: the 60 000-particle
   // ring 1.69x the 10 052 one per entry on one thread, 1.45-1.55x less with the wavefront of
@@ -169,8 +170,10 @@ struct CostConstants {
   // the probe ring's 23.5: 1.24.
   double solid_wet_factor = 1.24;
   // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
-  // with the symplectic step): the probe ring's one-sub-step call less its scalar sub-step;
-  // session 20, CALL. Scaled by its own machine factor.
+  // with the symplectic step): the probe ring's one-sub-step call less its scalar sub-step
+  // (session 20, the same checks: x0.46-0.54 of a trial 50 ns = 25 ns); the tension bar's
+  // solid phase (one sub-step per call, 3.79 entries per particle) 82 ns per particle and
+  // call = 25 + 3.79 x 14.5. Scaled by its own machine factor.
   double solid_call_ns = 25.0;
   // The Johnson–Cook law's elastic path per particle-sub-step beyond the SVK law (its return
   // mapping's yield test, the Mie–Grüneisen pressure, the heating and the damage update run
