@@ -17,7 +17,10 @@ constants of the model in src/app/cost_model.h by least squares on the relative 
            c_sub = c_lane N_b where the pair loops run in lanes, c_pair P_b where scalar (P_b
            the body's pair entries, printed by `slamsph check` per particle); c_lane, c_pair
            and c_call from the SVK cases, c_jc (the Johnson–Cook law's elastic path, little
-           yield in 60 steps) from the Johnson–Cook bodies (median)
+           yield in 60 steps) from the Johnson–Cook bodies (median). The sub-step costs of
+           wet cases include solid_wet_factor (cost_model.h): divide by it before taking
+           them as the body-alone constants (session 20 took them from benchmarks and the
+           probe instead: docs/validation.md §6 "Cost model")
 
 Then it prints, for each case, the measured phase times against the fitted model. Time is
 CPU time: each phase's share of a 1-thread run's wall time times the run's CPU time
