@@ -18,6 +18,14 @@
 //    so the sub-step count is comparable). The mode stays elastic (stress ~10 MPa against
 //    A = 265 MPa): the rate ratio to BM_RingSubsteps is the cost of the law's elastic path
 //    (issue 11: at most 2x the SVK sub-step).
+//  - BM_RingSubstepsJohnsonCookYielding: the 2-layer Johnson–Cook ring given 100 m/s radially
+//    outward: its hoop strain passes the yield strain (0.4 %) after ~12 µs and it keeps
+//    flowing, decelerated by its hoop stress, for the fixed 100 iterations of 20 sub-steps
+//    (~200 µs, plastic strain ~4 %, under the failure strain 0.19), so nearly every
+//    particle-sub-step runs the return mapping; counter `yielding` the fraction of particles
+//    whose plastic strain grew in an iteration, averaged. Its rate against
+//    BM_RingSubstepsJohnsonCook is the cost of yielding (app/cost_model.h
+//    johnson_cook_yield_factor).
 // Callgrind: `valgrind --tool=callgrind --toggle-collect='slamsph::advance_body*'
 //   build/bench/bench_solid --benchmark_filter='BM_RingSubsteps/case:0/threads:1'
 //   --benchmark_min_time=0` counts the sub-step loop only (notes: instructions per
@@ -28,6 +36,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "app/simulation.h"
 #include "core/parallel.h"
@@ -36,6 +45,7 @@
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 #include "solid/body_dynamics.h"
+#include "solid/materials/johnson_cook.h"
 #include "solid/materials/material_presets.h"
 
 using namespace slamsph;
@@ -105,17 +115,35 @@ SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false) {
   return b;
 }
 
-void ring_substeps(benchmark::State& st, bool johnson_cook) {
+void ring_substeps(benchmark::State& st, bool johnson_cook, double expansion = 0.0) {
   SolidBody b = aluminium_ring(kRings[st.range(0)], johnson_cook);
+  if (expansion > 0.0)
+    for (std::size_t i = 0; i < b.size(); ++i) b.v[i] = expansion / norm(b.X[i]) * b.X[i];
   const Executor exec(static_cast<int>(st.range(1)));
   double t = 0.0;
   long substeps = 0;
+  // The fraction of particles whose plastic strain grew in an iteration (Johnson–Cook only).
+  const bool plastic = johnson_cook && !b.history.values.empty();
+  std::vector<double> ep;
+  double yielding = 0.0;
+  long iterations = 0;
   for (auto _ : st) {
+    if (plastic) ep = b.history.values[JohnsonCook::kPlasticStrain];
     const double dt = 20.0 * stable_time_step(b) * (1.0 - 1e-9);
     advance_body(b, t, dt, {}, exec);
     t += dt;
     substeps += b.last_substeps;
+    if (plastic) {
+      st.PauseTiming();
+      std::size_t grew = 0;
+      for (std::size_t i = 0; i < b.size(); ++i)
+        grew += b.history.values[JohnsonCook::kPlasticStrain][i] > ep[i];
+      yielding += static_cast<double>(grew) / static_cast<double>(b.size());
+      ++iterations;
+      st.ResumeTiming();
+    }
   }
+  if (plastic) st.counters["yielding"] = yielding / static_cast<double>(std::max(1L, iterations));
   st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
   st.counters["particles"] = static_cast<double>(b.size());
   st.counters["substeps"] = static_cast<double>(substeps);
@@ -146,6 +174,16 @@ void BM_RingSubstepsJohnsonCook(benchmark::State& st) {
 BENCHMARK(BM_RingSubstepsJohnsonCook)
     ->ArgsProduct({{0, 1, 2}, {1, 2}})
     ->ArgNames({"case", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_RingSubstepsJohnsonCookYielding(benchmark::State& st) {
+  ring_substeps(st, true, 200.0);
+}
+BENCHMARK(BM_RingSubstepsJohnsonCookYielding)
+    ->Args({0, 1})
+    ->ArgNames({"case", "threads"})
+    ->Iterations(100)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -13,9 +13,14 @@ constants of the model in src/app/cost_model.h by least squares on the relative 
            displacement check is small: a separate per-step term fitted negative)
   contact  contact = steps c_cpair (N_fc + N_cf) with water,
            every phase but the sub-steps = steps c_dry N_contact without
-  solid    solid_substeps = Σ_b (k_law c_sub P_b substeps_b + c_call N_b steps) (P_b the
-           body's pair entries, printed by `slamsph check` per particle), c_sub and
-           c_call from the SVK cases, k_law of Johnson–Cook bodies from theirs (median)
+  solid    solid_substeps = Σ_b (c_sub substeps_b + c_call N_b steps + c_jc N_b substeps_b):
+           c_sub = c_lane N_b where the pair loops run in lanes, c_pair P_b where scalar (P_b
+           the body's pair entries, printed by `slamsph check` per particle); c_lane, c_pair
+           and c_call from the SVK cases, c_jc (the Johnson–Cook law's elastic path, little
+           yield in 60 steps) from the Johnson–Cook bodies (median). The sub-step costs of
+           wet cases include solid_wet_factor (cost_model.h): divide by it before taking
+           them as the body-alone constants (session 20 took them from benchmarks and the
+           probe instead: docs/validation.md §6 "Cost model")
 
 Then it prints, for each case, the measured phase times against the fitted model. Time is
 CPU time: each phase's share of a 1-thread run's wall time times the run's CPU time
@@ -66,9 +71,11 @@ def check(slamsph, case):
                   r"(\d+) contact pairs listed\)", out)
     if not m:
         sys.exit(f"{case}: no prediction in 'slamsph check' output:\n{out}")
-    elastic = [(int(a), float(f), float(q)) for a, q, f in re.findall(
-        r"body \S+: (\d+) particles, elastic, (\S+) pairs per particle, .*? law cost x(\S+)",
-        out)]
+    # (particles, Johnson–Cook?, pair entries per particle, pair loops in lanes?)
+    elastic = [(int(a), law == "johnson_cook", float(q), loops == "in lanes")
+               for a, q, loops, law in re.findall(
+                   r"body \S+: (\d+) particles, elastic, (\S+) pairs per particle, .*?"
+                   r"\(pair loops (in lanes|scalar)\), law (\S+)", out)]
     return dict(water=int(m.group(1)), contact=int(m.group(2)), wpairs=int(m.group(3)),
                 cpairs=int(m.group(4)), elastic=elastic)
 
@@ -92,7 +99,7 @@ def lsq(rows):
             b[i] += w * xs[i] * y
             for j in range(k):
                 A[i][j] += w * xs[i] * xs[j]
-    # Gaussian elimination (k <= 2)
+    # Gaussian elimination (k <= 3)
     for i in range(k):
         for r in range(i + 1, k):
             f = A[r][i] / A[i][i]
@@ -179,20 +186,29 @@ def main():
         else [0.0]
 
     # One elastic body per shipped case: its sub-steps are the run's. SVK bodies fit the
-    # sub-step and per-call costs; Johnson–Cook bodies then their law factor.
-    def solid_x(r, law):
-        nb, _, pairs = r["elastic"][0]  # the sub-step costs per pair entry, the call per particle
-        return [1e-9 * nb * pairs * law * r["sub"], 1e-9 * nb * r["steps"]]
-    svk = [r for r in el if r["elastic"][0][1] == 1.0]
-    jc = [r for r in el if r["elastic"][0][1] != 1.0]
-    cs = lsq([(solid_x(r, 1.0), r["t"]["solid_substeps"]) for r in svk])
+    # sub-step (in lanes per particle, scalar per pair entry) and per-call costs; Johnson–Cook
+    # bodies then their law's extra cost per particle-sub-step.
+    def solid_x(r):
+        nb, _, pairs, lanes = r["elastic"][0]
+        sub = 1e-9 * nb * r["sub"]
+        return [sub if lanes else 0.0, 0.0 if lanes else sub * pairs, 1e-9 * nb * r["steps"]]
+    svk = [r for r in el if not r["elastic"][0][1]]
+    jc = [r for r in el if r["elastic"][0][1]]
+    rows = [(solid_x(r), r["t"]["solid_substeps"]) for r in svk]
+    used = [i for i in range(3) if any(x[i] for x, _ in rows)]
+    fit = lsq([([x[i] for i in used], y) for x, y in rows]) if rows else []
+    cs = [0.0, 0.0, 0.0]
+    for i, v in zip(used, fit):
+        cs[i] = v
+    def svk_model(r):
+        return sum(c * x for c, x in zip(cs, solid_x(r)))
     kjc = statistics.median(
-        (r["t"]["solid_substeps"] - cs[1] * solid_x(r, 1.0)[1]) / (cs[0] * solid_x(r, 1.0)[0])
-        for r in jc) if jc else 1.75
+        (r["t"]["solid_substeps"] - svk_model(r)) / (1e-9 * r["elastic"][0][0] * r["sub"])
+        for r in jc) if jc else 68.0
     print(f"water_pair_ns_small = {cp[0]:.2f}, water_pair_ns_large = {cp[1]:.2f}, water_ns = "
           f"{cw[0]:.1f}, rebuild_ns = {cl[0]:.1f}, contact_pair_ns = "
-          f"{cc[0]:.2f}, dry_contact_ns = {cd[0]:.1f}, solid_pair_ns = {cs[0]:.1f}, solid_call_ns = "
-          f"{cs[1]:.1f}, johnson_cook_factor = {kjc:.2f}")
+          f"{cc[0]:.2f}, dry_contact_ns = {cd[0]:.1f}, solid_lane_ns = {cs[0]:.1f}, solid_pair_ns = "
+          f"{cs[1]:.1f}, solid_call_ns = {cs[2]:.1f}, johnson_cook_elastic_ns = {kjc:.1f}")
     print()
     print("| case | water / contact / elastic | steps | phase: measured / model [s] water, "
           "lists, contact, solid | total measured / model | load |")
@@ -207,15 +223,14 @@ def main():
         mc = st * cc[0] * r["cpairs"] if r["water"] else st * cd[0] * r["contact"]
         ms = 0.0
         if r in el:
-            law = 1.0 if r["elastic"][0][1] == 1.0 else kjc
-            x = solid_x(r, law)
-            ms = cs[0] * x[0] + cs[1] * x[1]
+            ms = svk_model(r) + (1e-9 * kjc * r["elastic"][0][0] * r["sub"]
+                                 if r["elastic"][0][1] else 0.0)
         meas = [water_t(r) + r["t"]["fluid_rates"], r["t"]["neighbour_lists"], r["t"]["contact"],
                 r["t"]["solid_substeps"]] if r["water"] else \
             [0.0, 0.0, dry_t(r), r["t"]["solid_substeps"]]
         mod = [mw, ml, mc, ms]
         tm, tp = sum(meas), sum(mod)
-        ne = sum(p for p, _, _ in r["elastic"])
+        ne = sum(e[0] for e in r["elastic"])
         print(f"| {r['name']} | {r['water']} / {r['contact']} / {ne} | {r['steps']} | " +
               ", ".join(f"{x:.3g} / {y:.3g}" for x, y in zip(meas, mod)) +
               f" | {tm:.3g} / {tp:.3g} ({100 * (tp / tm - 1):+.0f} %) | {r['load']:.2f} |")

@@ -14,6 +14,7 @@
 #include "solid/elastic_substep.h"
 #include "solid/materials/johnson_cook.h"
 #include "solid/solid_body.h"
+#include "solid/substep_pair_lanes.h"
 
 namespace slamsph {
 namespace {
@@ -175,11 +176,144 @@ Spread spread_at_rest(const Columns& col, const ContactParticles& contact, doubl
   return sp;
 }
 
+// Yield and damage of a Johnson–Cook body from its loading (the header comment): the
+// clamps' velocities against the free material's initial velocity, the body's elastic
+// constants, the Johnson–Cook hardening and failure constants and the end time T.
+struct PlasticEstimate {
+  std::string loading = "no clamps";
+  double yield_fraction = 0.0;  // of the particle-sub-steps over [0, T]
+  double yield_start = std::numeric_limits<double>::infinity();
+  double damage_start = std::numeric_limits<double>::infinity();
+};
+
+PlasticEstimate estimate_plastic(const SolidBody& b, const JohnsonCookModel& jc, double T) {
+  PlasticEstimate e;
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::size_t n = b.size();
+  if (n == 0 || T <= 0.0) return e;
+  const double E = b.material.youngs_modulus, nu = b.material.poisson_ratio;
+  const double rho = b.material.density;
+  // The plane-strain bar (σ_yy = 0, ε_zz = 0): E' = E/(1-ν²), c = sqrt(E'/ρ); its elastic
+  // state σ_zz = ν σ_xx reaches the yield stress A at σ_xx = A / sqrt(1-ν+ν²).
+  const double Ep = E / (1.0 - nu * nu), c = std::sqrt(Ep / rho);
+  const double sigma_y = jc.a / std::sqrt(1.0 - nu + nu * nu);
+  const double eps_y = sigma_y / Ep, v_y = sigma_y / (rho * c);
+  // The Johnson–Cook failure strain at the triaxiality of plane-strain tension, 1/√3 (σ_zz =
+  // σ_xx/2 once plastic), without its rate and temperature terms.
+  double eps_f = inf;
+  if (jc.failure.kind == FailureKind::JohnsonCook)
+    eps_f = jc.failure.d1 + jc.failure.d2 * std::exp(jc.failure.d3 / std::sqrt(3.0));
+  else if (jc.failure.kind == FailureKind::CriticalPlasticStrain)
+    eps_f = jc.failure.critical_plastic_strain;
+  // Clamp groups (by clamp velocity) and the free material's mean initial velocity.
+  struct Group {
+    Vec2 v, centre;
+    std::vector<std::size_t> members;
+  };
+  std::vector<Group> groups;
+  Vec2 v_free{};
+  std::size_t n_free = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i < b.clamped.size() && b.clamped[i]) {
+      const Vec2 v = i < b.clamp_velocity.size() ? b.clamp_velocity[i] : Vec2{};
+      auto g = std::find_if(groups.begin(), groups.end(),
+                            [&](const Group& q) { return q.v.x == v.x && q.v.y == v.y; });
+      if (g == groups.end()) g = groups.insert(groups.end(), Group{v, {}, {}});
+      g->members.push_back(i);
+      g->centre = g->centre + b.X[i];
+    } else {
+      v_free = v_free + b.v[i];
+      ++n_free;
+    }
+  }
+  if (groups.empty() || n_free == 0) return e;
+  for (Group& g : groups) g.centre = 1.0 / static_cast<double>(g.members.size()) * g.centre;
+  v_free = 1.0 / static_cast<double>(n_free) * v_free;
+  const double support = b.kernel.support();
+  // Fraction of the particles that are free and lie between `lo` and `hi` along `dir`.
+  auto between = [&](Vec2 dir, double lo, double hi) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double s = dot(b.X[i], dir);
+      if (!(i < b.clamped.size() && b.clamped[i]) && s > lo && s < hi) ++k;
+    }
+    return static_cast<double>(k) / static_cast<double>(n);
+  };
+  // ∫ fraction dt over [0, T], the fraction `f` from t0 until the damage at td, then the band
+  // `f_band` at the failed section.
+  auto fraction = [&](double f, double t0, double td, double f_band) {
+    double a = f * std::max(0.0, std::min(T, td) - t0);
+    if (td < T) a += f_band * (T - td);
+    return std::clamp(a / T, 0.0, 1.0);
+  };
+  // An impact: the largest jump between a clamp and the free material.
+  const Group* hit = nullptr;
+  double dv_jump = 0.0;
+  for (const Group& g : groups)
+    if (norm(v_free - g.v) > dv_jump) {
+      dv_jump = norm(v_free - g.v);
+      hit = &g;
+    }
+  if (hit != nullptr && dv_jump > v_y) {
+    e.loading = "impact";
+    const Vec2 dir = 1.0 / dv_jump * (v_free - hit->v);
+    double clamp_edge = -inf, far = -inf;
+    for (std::size_t i : hit->members) clamp_edge = std::max(clamp_edge, dot(b.X[i], dir));
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(i < b.clamped.size() && b.clamped[i])) far = std::max(far, dot(b.X[i], dir));
+    const double L = std::max(far - clamp_edge, support);
+    const double f_free = between(dir, clamp_edge, inf);
+    const double t_cross = L / c;
+    // The plastic strain at the clamp (von Kármán): Δv − v_y = sqrt(B n/ρ) 2/(n+1) ε^((n+1)/2).
+    double eps_1 = inf;
+    if (jc.b > 0.0 && jc.n > 0.0)
+      eps_1 = std::pow((dv_jump - v_y) * 0.5 * (jc.n + 1.0) / std::sqrt(jc.b * jc.n / rho),
+                       2.0 / (jc.n + 1.0));
+    e.yield_start = 0.0;
+    if (eps_1 >= eps_f) e.damage_start = t_cross;
+    // While the elastic front crosses, the part behind it yields (on average half of it).
+    const double t1 = std::min(T, e.damage_start);
+    const double cross = std::min(t1, t_cross);
+    double a = f_free * (cross * cross / (2.0 * t_cross) + std::max(0.0, t1 - t_cross));
+    if (e.damage_start < T) a += f_free * std::min(1.0, 2.0 * support / L) * (T - e.damage_start);
+    e.yield_fraction = std::clamp(a / T, 0.0, 1.0);
+    return e;
+  }
+  // Clamps pulled apart (or pushed together): the fastest-straining gauge between two groups.
+  double rate = 0.0, gauge = 0.0, f_gauge = 0.0;
+  for (std::size_t p = 0; p < groups.size(); ++p)
+    for (std::size_t q = p + 1; q < groups.size(); ++q) {
+      const Vec2 d = groups[q].centre - groups[p].centre;
+      if (norm(d) == 0.0) continue;
+      const Vec2 dir = 1.0 / norm(d) * d;
+      double lo = -inf, hi = inf;
+      for (std::size_t i : groups[p].members) lo = std::max(lo, dot(b.X[i], dir));
+      for (std::size_t i : groups[q].members) hi = std::min(hi, dot(b.X[i], dir));
+      if (hi <= lo) continue;
+      const double r = std::abs(dot(groups[q].v - groups[p].v, dir)) / (hi - lo);
+      if (r > rate) {
+        rate = r;
+        gauge = hi - lo;
+        f_gauge = between(dir, lo, hi);
+      }
+    }
+  if (rate > 0.0) {
+    e.loading = "clamps pulled apart";
+    e.yield_start = eps_y / rate;
+    // Damage once the nominal plastic strain reaches the failure strain: the axial plastic
+    // strain of plane-strain flow is √3/2 of the equivalent one.
+    e.damage_start = (eps_y + 0.5 * std::sqrt(3.0) * eps_f) / rate;
+    e.yield_fraction = fraction(f_gauge, e.yield_start, e.damage_start,
+                                f_gauge * std::min(1.0, 2.0 * support / gauge));
+  }
+  return e;
+}
+
 }  // namespace
 
 double CostPrediction::wall_seconds(int threads) const {
   if (threads <= 1) return cpu_seconds();
-  double w = (fluid_seconds + lists_seconds + contact_seconds) / fluid_speedup;
+  double w = (fluid_seconds + lists_seconds + contact_seconds) / fluid_speedup + output_seconds;
   double solid = 0.0;
   bool one_thread_bodies = true;
   for (const BodyCost& b : bodies) {
@@ -259,9 +393,13 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
     }
   }
   for (const SolidBody& b : sim.bodies()) {
-    BodyCost bc{
-        b.name, b.size(), b.topology.pairs.index.size(), b.is_elastic(), stable_time_step(b), 0};
-    if (std::holds_alternative<JohnsonCook>(b.material.law)) bc.law_factor = k.johnson_cook_factor;
+    BodyCost bc;
+    bc.name = b.name;
+    bc.particles = b.size();
+    bc.pairs = b.topology.pairs.index.size();
+    bc.elastic = b.is_elastic();
+    bc.stable_step = stable_time_step(b);
+    bc.johnson_cook = std::holds_alternative<JohnsonCook>(b.material.law);
     if (share && bc.stable_step < dt) {
       dt = bc.stable_step;
       c.limiter = "solid CFL (body " + b.name + ")";
@@ -312,6 +450,13 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
                         ? 1.0
                         : log_interpolate(nw, k.fluid_n_small, k.fluid_n_large,
                                           k.fluid_speedup_small, k.fluid_speedup_large);
+  // Field snapshots (and the skin's profile with them), drawn on one thread.
+  for (double t : cfg.output.snapshots)
+    if (t <= num.end_time * (1.0 + 1e-12)) ++c.snapshots;
+  const bool profile = !cfg.output.skin_profile.empty() && cfg.output.skin_profile != "none";
+  c.output_seconds = c.snapshots * (k.snapshot_s + (profile ? k.skin_profile_s : 0.0));
+  // The sub-steps of a run with water share the caches with it (see CostConstants).
+  const double wet = c.fluid_particles > 0 ? k.solid_wet_factor : 1.0;
   const Executor two(2);
   for (std::size_t i = 0; i < c.bodies.size(); ++i) {
     BodyCost& bc = c.bodies[i];
@@ -324,12 +469,36 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
         std::max(1L, static_cast<long>(std::ceil(dt / calls / bc.stable_step * (1.0 - 1e-12))));
     const long total = bc.substeps_per_step * c.fluid_steps;
     c.solid_substeps += total;
+    const SolidBody& body = sim.bodies()[i];
     const double n = static_cast<double>(bc.particles);
-    const double pair_ns = log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_pair_ns,
-                                           k.solid_pair_ns_large);
-    bc.seconds = 1e-9 * (pair_ns * bc.law_factor * static_cast<double>(bc.pairs) *
-                             static_cast<double>(total) +
-                         k.solid_call_ns * n * calls * steps);
+    const double subs = static_cast<double>(total);
+    // The pair loops run in lanes in calls of at least kMinLaneSubsteps sub-steps on an
+    // AVX-512F CPU, without an Eulerian switch (solid/elastic_substep.cpp); then the sub-step
+    // costs per particle, else per pair entry (see the header).
+    bc.lanes = bc.substeps_per_step / static_cast<long>(calls) >= kMinLaneSubsteps &&
+               substep_lanes_avx512_available() && !body.eulerian.active;
+    const double sub_seconds = bc.lanes
+                                   ? 1e-9 * n * subs *
+                                         log_interpolate(n, k.solid_n_small, k.solid_n_large,
+                                                         k.solid_lane_ns, k.solid_lane_ns_large)
+                                   : 1e-9 * static_cast<double>(bc.pairs) * subs *
+                                         log_interpolate(n, k.solid_n_small, k.solid_n_large,
+                                                         k.solid_pair_ns, k.solid_pair_ns_large);
+    bc.seconds = wet * sub_seconds + 1e-9 * k.solid_call_ns * n * calls * steps;
+    if (bc.johnson_cook) {
+      const PlasticEstimate pe = estimate_plastic(
+          body, std::get<JohnsonCook>(body.material.law).parameters().jc, num.end_time);
+      bc.loading = pe.loading;
+      bc.yield_fraction = pe.yield_fraction;
+      bc.yield_start = pe.yield_start;
+      bc.damage_start = pe.damage_start;
+      bc.seconds += 1e-9 * n * subs *
+                    (k.johnson_cook_elastic_ns + pe.yield_fraction * k.johnson_cook_yield_ns);
+      if (pe.damage_start < num.end_time)
+        bc.failure_seconds =
+            1e-9 * k.failure_zone_ns * n * steps * (num.end_time - pe.damage_start) / num.end_time;
+      c.contact_seconds += bc.failure_seconds;
+    }
     c.solid_seconds += bc.seconds;
     // The team the sub-steps run on (solid/elastic_substep.cpp).
     bc.speedup = two.threads_for(bc.particles, kSubstepParticlesPerThread) > 1
@@ -413,50 +582,62 @@ min = [0.0, 0.0]
 max = [0.8, 0.5]
 layers = 4
 )";
-  const std::string plate = R"(
+  // The fuselage skins' body (cases/skin_ring_reduced.toml, cases/fuselage/skin_cylinder.toml):
+  // a 2-layer aluminium ring, 3.0 pair entries per particle.
+  const std::string ring = R"(
 schema_version = 1
-name = "cost_probe_plate"
+name = "cost_probe_ring"
 [numerics]
-dx = 0.002
+dx = 0.0015
 end_time = 1.0
 gravity = [0.0, 0.0]
 [numerics.domain]
-min = [-0.1, -0.1]
-max = [0.3, 0.1]
-[materials.plate]
-density = 1000.0
-youngs_modulus = 2.0e6
-poisson_ratio = 0.3975
+min = [-0.4, -0.4]
+max = [0.4, 0.4]
+[materials.aluminium]
+model = "svk"
+density = 2700.0
+youngs_modulus = 67.5e9
+poisson_ratio = 0.34
 [[body]]
-name = "plate"
-material = "plate"
+name = "ring"
+material = "aluminium"
 gravity = false
 velocity = [0.0, 0.01]
 [body.shape]
-type = "rectangle"
-min = [0.0, 0.0]
-max = [0.2, 0.04]
+type = "ring"
+centre = [0.0, 0.0]
+inner_radius = 0.297
+outer_radius = 0.3
+layers = 2
 )";
   MachineFactors f;
   const auto [wt, wp] = probe(water, 40, k);
   if (wp > 0.0 && wt > 0.0) f.fluid = wt / wp;
-  // The solid's two costs (per sub-step, per call) from the same vibrating plate advanced one
-  // sub-step per call and kSubsteps per call: their difference is kSubsteps - 1 sub-steps.
-  const Simulation sim(parse_case_string(plate, "cost_probe.toml"), silent_options(1));
+  // The solid's costs (per sub-step in lanes and in the scalar loops, per call) from the same
+  // ring advanced one sub-step per call, kScalar and kLanes per call: the differences are
+  // kScalar - 1 scalar sub-steps and kLanes - 1 sub-steps in lanes (whose call also lays the
+  // pairs out for the lanes: a set-up per call, ~1/40 of the difference).
+  const Simulation sim(parse_case_string(ring, "cost_probe.toml"), silent_options(1));
   const SolidBody& body = sim.bodies().front();
   const double n = static_cast<double>(body.size());
-  const double sub =
+  const double lane =
+      1e-9 * n *
+      log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_lane_ns, k.solid_lane_ns_large);
+  const double scalar =
       1e-9 * static_cast<double>(body.topology.pairs.index.size()) *
       log_interpolate(n, k.solid_n_small, k.solid_n_large, k.solid_pair_ns, k.solid_pair_ns_large);
   const double call = 1e-9 * n * k.solid_call_ns;
-  constexpr int kSubsteps = 40;
+  constexpr int kScalar = kMinLaneSubsteps - 1, kLanes = 40;
   const double one = seconds_per_call(body, 1, 100);
-  const double many = seconds_per_call(body, kSubsteps, 5);
-  if (sub > 0.0 && many > one) {
-    f.solid = (many - one) / ((kSubsteps - 1) * sub);
+  const double few = seconds_per_call(body, kScalar, 20);
+  const double many = seconds_per_call(body, kLanes, 5);
+  if (lane > 0.0 && many > one) f.solid = (many - one) / ((kLanes - 1) * lane);
+  if (scalar > 0.0 && few > one) {
+    f.solid_scalar = (few - one) / ((kScalar - 1) * scalar);
     // The per-call part: what one call costs beyond its sub-step, at least a tenth of the
-    // calibration runs' (a faster set-up than that is within the probes' noise).
-    if (call > 0.0) f.solid_call = std::max(0.1, (one - f.solid * sub) / call);
+    // constant (a faster set-up than that is within the probes' noise).
+    if (call > 0.0) f.solid_call = std::max(0.1, (one - f.solid_scalar * scalar) / call);
   }
   return f;
 }
@@ -466,8 +647,14 @@ CostConstants scaled(const CostConstants& k, const MachineFactors& f) {
   for (double* x : {&c.water_pair_ns_small, &c.water_pair_ns_large, &c.water_ns, &c.rebuild_ns,
                     &c.contact_pair_ns, &c.dry_contact_ns})
     *x *= f.fluid;
-  for (double* x : {&c.solid_pair_ns, &c.solid_pair_ns_large}) *x *= f.solid;
+  for (double* x : {&c.solid_lane_ns, &c.solid_lane_ns_large}) *x *= f.solid;
+  // The laws' own work runs scalar in either loop (solid/substep_law_lanes.h: SVK's excepted).
+  for (double* x : {&c.solid_pair_ns, &c.solid_pair_ns_large, &c.johnson_cook_elastic_ns,
+                    &c.johnson_cook_yield_ns})
+    *x *= f.solid_scalar;
   c.solid_call_ns *= f.solid_call;
+  // A failure zone's gathers: a cell grid, normals and layers, scalar loops over the body.
+  c.failure_zone_ns *= f.solid_call;
   return c;
 }
 
@@ -498,27 +685,43 @@ std::string describe_cost(const CostPrediction& c, int threads) {
     if (b.elastic)
       std::snprintf(buf, sizeof buf,
                     "  body %s: %zu particles, elastic, %.3g pairs per particle, stable step "
-                    "%.3g s, %ld sub-steps per fluid step, law cost x%.3g\n",
+                    "%.3g s, %ld sub-steps per fluid step (pair loops %s), law %s\n",
                     b.name.c_str(), b.particles,
                     static_cast<double>(b.pairs) / static_cast<double>(b.particles), b.stable_step,
-                    b.substeps_per_step, b.law_factor);
+                    b.substeps_per_step, b.lanes ? "in lanes" : "scalar",
+                    b.johnson_cook ? "johnson_cook" : "svk");
     else
       std::snprintf(buf, sizeof buf, "  body %s: %zu particles, rigid\n", b.name.c_str(),
                     b.particles);
     s += buf;
-    // The law factor is the elastic path's with little yield (fitted on 60 steps); a body that
-    // yields throughout iterates its return mapping in every sub-step: x5.7-7.8 an SVK sub-step
-    // on a plate that yields everywhere (docs/validation.md §6 "Cost model", session 14; the
-    // notched specimen's sub-steps ran 2.3x the prediction).
-    if (b.elastic && b.law_factor != 1.0)
-      s += "    (its law cost assumes mostly elastic sub-steps: a body that yields throughout "
-           "takes up to 3x longer)\n";
+    if (!b.elastic || !b.johnson_cook) continue;
+    // Yield and failure are estimated from the loading (see the header): say so, and what.
+    if (b.loading == "no clamps") {
+      s += "    yield not estimated (no clamps: a load from water or contact is not seen); "
+           "costed elastic, a body that yields throughout takes up to 3x longer\n";
+      continue;
+    }
+    auto at = [](double t) {
+      char w[48];
+      if (std::isfinite(t))
+        std::snprintf(w, sizeof w, "at %.3g s", t);
+      else
+        std::snprintf(w, sizeof w, "not within the run");
+      return std::string(w);
+    };
+    std::snprintf(
+        buf, sizeof buf,
+        "    estimated from the loading (%s): starts to yield %s, yields in %.0f %% of its "
+        "particle-sub-steps, fails %s (its cost: the solid and contact phases below)\n",
+        b.loading.c_str(), at(b.yield_start).c_str(), 100.0 * b.yield_fraction,
+        at(b.damage_start).c_str());
+    s += buf;
   }
   std::snprintf(buf, sizeof buf,
                 "predicted CPU time on 1 thread: %.3g s (water %.3g s, neighbour lists %.3g s, "
-                "contact %.3g s, solid %.3g s)\n",
+                "contact %.3g s, solid %.3g s, %d snapshots %.3g s)\n",
                 c.cpu_seconds(), c.fluid_seconds, c.lists_seconds, c.contact_seconds,
-                c.solid_seconds);
+                c.solid_seconds, c.snapshots, c.output_seconds);
   s += buf;
   const int t = std::max(1, threads);
   double solid_wall = 0.0;  // the sub-steps' share of wall_seconds(t)

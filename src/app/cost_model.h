@@ -41,14 +41,45 @@
 //             and stay there (the peer dam break's rose from 4 446 to ~10 000 in 1.3 s of its
 //             6.4 s; predicted mean 8 592 against 9 639 measured; the elastic gate 19 240
 //             against 22 151; cases/dam_break.toml 7 911 against 7 147)
-//   solid   = Σ_elastic (k_law c_sub(N_b) P_b n_b + c_call N_b) (n_b sub-steps per fluid
-//             step over P_b pair entries, each pair from both sides: the sub-step's two passes
-//             run over the pair lists, and a 2 000-particle plate with 3.88 entries per
-//             particle and a 2 514-particle ring with 3.0 measure 18.0 and 16.8 ns per entry on
-//             one thread while their costs per particle differ by 1.4x; c_call the per-call
-//             set-up of the sub-step loop, solid/elastic_substep.cpp, per particle; c_sub
-//             log-linear in N_b between 25 000 and 60 000 particles, where the arrays leave
-//             the caches)
+//   solid   = Σ_elastic (c_sub n_b + c_call N_b + c_jc N_b n_b + c_yield N_b n_b f_y)
+//             with n_b sub-steps per fluid step. c_sub: a call of at least kMinLaneSubsteps
+//             sub-steps on an AVX-512F CPU runs both passes' pair loops in eight lanes
+//             (solid/elastic_substep.cpp) and then costs per particle, c_lane N_b (session 20:
+//             the 2-layer ring of BM_RingSubsteps, 3.0 pair entries per particle, and the
+//             2 000-particle plate, 3.88, both 26 ns per particle-sub-step on one thread;
+//             per pair entry the plate had measured 1.3x cheaper, and a probe of it put the
+//             skins 15-22 % under their runs); shorter calls, other CPUs
+//             and Eulerian bodies run the scalar loops, c_pair P_b per sub-step over P_b pair
+//             entries (each pair from both sides; the plate and the ring 18.0 and 16.8 ns per
+//             entry before the lanes, session 13). c_sub log-linear in N_b between 25 000 and
+//             60 000 particles, where the arrays leave the caches; 1.24x with water (the
+//             water's arrays share the caches: whole runs against the body alone). c_call the
+//             per-call set-up of the sub-step loop, solid/elastic_substep.cpp, per particle. c_jc
+//             the Johnson–Cook law's elastic path per particle-sub-step, c_yield the return mapping
+//             of a yielding particle, f_y the fraction of its particle-sub-steps that yield,
+//             estimated from the body's loading (below)
+//   failure = c_fail N_b per fluid step once a body with failure has failed particles: every
+//             gather of its state rebuilds a cell grid over the body, the normals near the
+//             failed particles and the layers behind the crack faces (coupling/
+//             contact_layout.cpp gather_body_state); in the contact phase
+//   output  = c_snap per field snapshot within the run, c_profile more with the skin's
+//             profile (drawn at a fixed size, on one thread; the fuselage sections' two
+//             snapshots to 10 ms took ~1.1 s of 7.4)
+// Yield and damage from the loading (Johnson–Cook bodies held by clamps; estimate_plastic in
+// app/cost_model.cpp): the clamps' velocity against the free material's initial velocity
+// Δv, against v_y = σ_y/(ρ c) the particle velocity an elastic wave can carry (c the
+// plane-strain bar wave speed sqrt(E/((1-ν²)ρ)), σ_y the axial stress at which that wave
+// yields, A/sqrt(1-ν+ν²)). Δv > v_y (an impact: the shipped Johnson–Cook bar, 150 m/s
+// against 21 m/s): the material behind the elastic front yields as the front crosses it in
+// L/c; the plastic strain at the clamp is von Kármán's (von Kármán & Duwez, J. Appl. Phys.
+// 21 (1950) 987), Δv − v_y = ∫ sqrt(σ'(ε)/ρ) dε over the hardening A + B ε̄p^n; past the
+// Johnson–Cook failure strain at the triaxiality of plane-strain tension (1/√3, without the
+// rate and temperature terms) the body fails there within that crossing, and then only a band
+// of two kernel supports at the failed section keeps yielding. Clamps moving apart at Δv
+// over a gauge L (the notched specimen: 2 m/s over 30 mm) strain the material between them
+// at Δv/L: it yields from ε_y/(Δv/L) on (ε_y = σ_y/E') and fails when its nominal plastic
+// strain reaches the failure strain. Stress raisers (notches) and water loads are not seen:
+// a body without clamps is costed elastic.
 // The wall time on T threads divides the water, lists and contact phases by the measured
 // two-thread speed-up S_f(N_water) (1 without water: those loops are too short to split) and
 // each body's sub-steps by S_s(N_b) when its team has
@@ -74,7 +105,10 @@ class Simulation;
 // session 10 the probes had measured this machine at x0.53-0.6 of them while its whole runs
 // went at x0.7-1.0 (the water probe is mostly the pair pass, which the lanes made faster
 // than the rest), and the peer dam break, the tension bar and the Johnson-Cook bar fell
-// 28-39 % under their predictions on 2 threads.
+// 28-39 % under their predictions on 2 threads. Session 20 measured the solid constants anew
+// on this machine (the sub-step's pair loops and SVK law in AVX-512 lanes since sessions
+// 18-19, the skins' ring as the probe; the Johnson–Cook law's, yield and failure costs from
+// benchmarks and alternated runs; below).
 // Two-thread speed-ups: docs/validation.md §6 (throughput.sh, BM_RingSubsteps, idle).
 struct CostConstants {
   // Per listed water–water pair per fluid step, at ≤ water_n_small / ≥ water_n_large water
@@ -103,30 +137,75 @@ struct CostConstants {
   // plate 1.25 s over 31 557 steps of 1 872 particles, 21.2 ns; the tension bar 21.8 ns):
   // 60-step runs of these cases are mostly their first steps (the fit gave 68 ns).
   double dry_contact_ns = 22.0;
-  // Per elastic pair entry per sub-step (SVK), ≤ solid_n_small particles: fitted (session 18;
-  // session 10's 100 ns per particle over 3.15 entries was 32 ns).
-  double solid_pair_ns = 21.5;
-  // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3 — the
-  // 60 000-particle ring of bench_solid runs 1.69x slower per pair entry than the 10 052 one
-  // (BM_RingSubsteps, 1 thread, medians of 3, session 13: 29.1 against 17.2 ns per entry;
-  // session 12 on another machine of this kind 1.95x; docs/validation.md §6). Since session 15
-  // a body of >= 20 000 particles without an Eulerian switch takes its sub-steps in a
-  // wavefront of up to 20 per sweep (solid/substep_levels.h): the 60 000-particle ring 1.45-
-  // 1.55x faster on 1 thread (benchmark CPU time, alternated): 54 / 1.5 = 36 ns, scaled in
-  // session 18 as the small bodies' constant (32 → 21.5 ns).
-  double solid_pair_ns_large = 24.0;
+  // The solid constants below are this machine's (session 20, one thread, under quiet.py:
+  // every other process paused), so that its probes measure about x1; the water constants
+  // above are the session 18 fit's.
+  // Per elastic particle per sub-step (SVK) in a call that runs the pair loops in lanes (at
+  // least kMinLaneSubsteps sub-steps, AVX-512F, no Eulerian switch), ≤ solid_n_small
+  // particles, the body alone: the probe ring (measure_machine_factors, the skins' 2-layer
+  // ring, no hourglass control) x0.79-0.85 of 29 ns in the first round of session 20's table
+  // = 23.5 ns; BM_RingSubsteps case 0 (the same ring with hourglass control and viscosity,
+  // 20 sub-steps per call) 37.9-38.3 M particle-steps/s = 26.4 ns; the 2 000-particle plate
+  // of session 18's probe (3.88 pair entries per particle against the ring's 3.0) 25.9 ns (its
+  // factor x0.31 of 21.5 ns per entry): per particle, not per entry, in the lanes.
+  double solid_lane_ns = 23.5;
+  // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3. Kept at
+  // the ratio of session 18's per-entry constants (24 / 21.5); not re-measured with the lanes.
+  double solid_lane_ns_large = 26.2;
+  // Per elastic pair entry per sub-step (SVK) in the scalar pair loops (calls of fewer than
+  // kMinLaneSubsteps sub-steps, CPUs without AVX-512F, Eulerian bodies), ≤ solid_n_small
+  // particles: the probe ring's calls of 7 and of 1 sub-step (measure_machine_factors),
+  // their difference over 6 sub-steps (session 20, three checks under quiet.py: x1.4-1.5 of a
+  // trial 10 ns = 14.5 ns per entry, 43.5 ns per particle at the ring's 3.0 entries).
+  double solid_pair_ns = 14.5;
+  // ≥ solid_n_large particles, the same ratio as the lanes' (session 13: the 60 000-particle
+  // ring 1.69x the 10 052 one per entry on one thread, 1.45-1.55x less with the wavefront of
+  // session 15).
+  double solid_pair_ns_large = 16.2;
+  // The sub-steps in a run with water against the body alone (both pair loops): the water's
+  // arrays share the caches with the body's between sub-step calls, and the body's state is
+  // gathered and its fluid forces scattered. skin_cylinder to 10 ms on one thread (session
+  // 20, quiet.py) 28.9 ns per particle-sub-step (4.84 s over 67 106 sub-steps of 2 500
+  // particles), skin_L_floor_column 29.4 ns (14.13 s, 88 558 sub-steps of 5 434), against
+  // the probe ring's 23.5: 1.24.
+  double solid_wet_factor = 1.24;
   // Per elastic particle per call of the sub-step loop (its set-up, once per fluid step, twice
-  // with the symplectic step): fitted in session 18 (sessions 10-13: 8 and 140 ns in two
-  // fits, 60 ns taken). Scaled by its own machine factor.
-  double solid_call_ns = 44.5;
-  // A Johnson–Cook sub-step against an SVK one, for sub-steps that do not yield: fitted on
-  // the calibration's 60 steps (2.56 in session 10, 2.98 in session 18); session 14 measured
-  // x2.3-3.0 on a 2 000-particle plate on one thread (ns per pair entry), and x5.7-7.8 with the
-  // plate stretched so that every particle yields (the return mapping's Newton iterations;
-  // docs/validation.md §6 "Cost model"). A body that yields for much of its run costs more (the
-  // notched specimen, which yields in 47 % of its particle-sub-steps, 2.3x its prediction); the
-  // initial state does not tell.
-  double johnson_cook_factor = 2.98;
+  // with the symplectic step): the probe ring's one-sub-step call less its scalar sub-step
+  // (session 20, the same checks: x0.46-0.54 of a trial 50 ns = 25 ns); the tension bar's
+  // solid phase (one sub-step per call, 3.79 entries per particle) 82 ns per particle and
+  // call = 25 + 3.79 x 14.5. Scaled by its own machine factor.
+  double solid_call_ns = 25.0;
+  // The Johnson–Cook law's elastic path per particle-sub-step beyond the SVK law (its return
+  // mapping's yield test, the Mie–Grüneisen pressure, the heating and the damage update run
+  // per particle, scalar, in either pair loop): BM_RingSubstepsJohnsonCook against
+  // BM_RingSubsteps, case 0, one thread, medians of 3 (session 20): 10.6 against 37.9 M
+  // particle-steps/s, 94.3 − 26.4 = 67.9 ns (x3.57 a lane sub-step; sessions 10-18 fitted
+  // x2.56-2.98 per scalar pair entry).
+  double johnson_cook_elastic_ns = 68.0;
+  // A yielding Johnson–Cook particle-sub-step beyond an elastic one (the return mapping's
+  // Newton iterations, the rate and heating terms): BM_RingSubstepsJohnsonCookYielding (the
+  // same ring expanding at 200 m/s, 99 % of its particle-sub-steps yield) 2.03 M
+  // particle-steps/s = 492 ns against the elastic ring's 94.3 ns, one thread, medians of 3
+  // (session 20): (492 − 94) / 0.99 = 402 ns; at 100 m/s (62 % yielding) 17.0 against
+  // 4.74 ms per 20 sub-steps, 394 ns. Charged per particle-sub-step at the yielding fraction
+  // estimated from the loading (estimate_plastic, see the header comment).
+  double johnson_cook_yield_ns = 400.0;
+  // Per particle of a body with failed particles per fluid step (its gathers: a cell grid
+  // over the body, the normals near the failed particles, the layers behind the crack
+  // faces): cases/johnson_cook_bar.toml on one thread, alternated runs, 3 each (session 20):
+  // contact phase 0.072 s with failure (first failure at 11.7 µs, 90 failed particles by the
+  // end) against 0.018 s with `materials.al.failure = "none"`, over 1 530 steps of 1 050
+  // particles from 11.7 µs of 150 µs: 36 ns.
+  double failure_zone_ns = 36.0;
+  // Per field snapshot (output.snapshots: the picture and its table, app/snapshots.h), and per
+  // snapshot of the skin's profile (output.skin_profile) [s], whatever the run's threads and
+  // nearly whatever its size (the picture is drawn at a fixed size): summary.json "other"
+  // (set-up, records, output) of session 20's 2-thread runs under quiet.py, less ~0.05-0.1 s
+  // without snapshots: cases/breached_plate.toml 1.0 s with 3 snapshots (0.32 s each),
+  // cases/skin_ring_reduced.toml 1.75 s with 3 and the profile (0.58 s each: 33 250 water
+  // particles), skin_cylinder to 2 ms with 2 and the profile 1.10-1.12 s (0.55 s each: 166 500
+  // water particles). Not scaled: no probe measures output.
+  double snapshot_s = 0.32, skin_profile_s = 0.24;
   // A symplectic fluid step (numerics.fluid_integrator, docs/model.md §5: a momentum and a
   // continuity pass) against a kick-drift-kick one, water and contact phases: dam break,
   // 7 131 steps either way, user CPU 12.5 against 9.1 s (docs/validation.md §6).
@@ -142,11 +221,14 @@ struct CostConstants {
   double solid_n_small = 25000, solid_n_large = 60000;
   // Two-thread speed-up of a body's sub-steps whose team has two threads: small at
   // ≤ solid_speedup_n_small particles, large at ≥ solid_speedup_n_large, log-linear between.
-  // Measured in whole-run slices (session 13, the solid phase on 1 and 2 threads, each
-  // against its own machine factor: docs/validation.md §6 "Cost model"): the 2-layer skin
+  // Measured in whole-run slices, the solid phase on 1 and 2 threads: session 13 (each
+  // against its own machine factor: docs/validation.md §6 "Cost model") the 2-layer skin
   // (2 500) 1.38, the L floor section (5 434) 1.47, the 6-layer skin (22 506) 1.79 and 2.03
-  // in two pairs of slices (1.75 taken); the 60 000-particle ring of bench_solid 2.0.
-  double solid_speedup_small = 1.38, solid_speedup_large = 1.75;
+  // in two pairs of slices (1.75 taken); the 60 000-particle ring of bench_solid 2.0. With
+  // the lanes (session 20, under quiet.py, `slamsph run --end-time 0.01 --exact-threads`):
+  // skin_cylinder 4.84 → 2.77 s (1.75), skin_L_floor_column 14.13 → 9.12 s (1.55): 1.65 taken
+  // up to 2 500 particles.
+  double solid_speedup_small = 1.65, solid_speedup_large = 1.75;
   double solid_speedup_n_small = 2500, solid_speedup_n_large = 22500;
 };
 
@@ -157,9 +239,18 @@ struct BodyCost {
   bool elastic = false;
   double stable_step = 0.0;    // [s] elastic: at the start; rigid: +inf
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
-  double law_factor = 1.0;     // sub-step cost of its material law relative to SVK
-  double seconds = 0.0;        // elastic: predicted CPU seconds on one thread
-  double speedup = 1.0;        // elastic: its sub-steps' two-thread speed-up (1: one thread)
+  bool lanes = false;          // elastic: its sub-steps' pair loops run in lanes
+  bool johnson_cook = false;   // its law is Johnson–Cook (costed with yield and failure)
+  // Johnson–Cook bodies, estimated from the loading (see the header comment): how it is
+  // loaded ("impact", "clamps pulled apart", "no clamps": not estimated), the fraction of
+  // its particle-sub-steps that yield, when it starts to yield and to fail [s] (+inf: not
+  // within the run).
+  std::string loading;
+  double yield_fraction = 0.0;
+  double yield_start = 0.0, damage_start = 0.0;
+  double seconds = 0.0;          // elastic: predicted CPU seconds on one thread (sub-steps)
+  double failure_seconds = 0.0;  // its failed particles' gathers (in the contact phase)
+  double speedup = 1.0;          // elastic: its sub-steps' two-thread speed-up (1: one thread)
 };
 
 struct CostPrediction {
@@ -180,9 +271,11 @@ struct CostPrediction {
   long solid_substeps = 0;  // over the run, all elastic bodies
   double fluid_seconds = 0.0, lists_seconds = 0.0, contact_seconds = 0.0, solid_seconds = 0.0;
   double water_pass_seconds = 0.0;  // the pair pass's part of fluid_seconds
+  int snapshots = 0;                // field snapshots within the run
+  double output_seconds = 0.0;      // their cost (one thread)
   double fluid_speedup = 1.0;       // of the water, lists and contact phases on two threads
   double cpu_seconds() const {
-    return fluid_seconds + lists_seconds + contact_seconds + solid_seconds;
+    return fluid_seconds + lists_seconds + contact_seconds + solid_seconds + output_seconds;
   }
   // Wall seconds on `threads` threads of an idle machine of this kind (two cores).
   double wall_seconds(int threads) const;
@@ -193,10 +286,15 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 
 // This machine against the one the constants were measured on, from short built-in runs on
 // one thread, each the fastest of five, divided by what `k` predicts for them: for the water
-// phases, a 3 200-particle water block in a tank for 40 fluid steps; for the solid, a
-// 2 000-particle SVK plate without water advanced by advance_body one sub-step per call
-// (100 calls) and 40 sub-steps per call (5 calls). The difference of the two is 39 sub-steps
-// (the sub-step factor), the rest of the one-sub-step call its set-up (the call factor): a
+// phases, a 3 200-particle water block in a tank for 40 fluid steps; for the solid, the
+// fuselage skins' body (a 2-layer aluminium ring, 0.6 m, 3 mm, 2 500 particles, 3.0 pair
+// entries each) without water advanced by advance_body one sub-step per call (100 calls),
+// 7 per call (20 calls: the scalar pair loops, under kMinLaneSubsteps) and 40 per call (5
+// calls: the lanes). The 7-call less the 1-call is 6 scalar sub-steps (the scalar factor),
+// the 40-call less the 1-call 39 sub-steps in lanes (the sub-step factor), the rest of the
+// one-sub-step call its set-up (the call factor; session 18's probe, a 2 000-particle plate
+// with 3.88 entries per particle, gained more from the lanes per entry than the skins: they
+// came out 15-22 % under). A
 // run whose bodies take hundreds of sub-steps per fluid step (the fuselage sections) costs
 // almost only sub-steps, one that takes one per step (the oscillating plate) a set-up per
 // sub-step, and the two do not change alike from machine to machine or from hour to hour (one
@@ -205,9 +303,10 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k = {});
 // thread is busy, changes the costs of each part alike to first order; `slamsph check` scales
 // the constants by these factors (0.7-0.9 s on this machine kind, session 13).
 struct MachineFactors {
-  double fluid = 1.0;       // water, neighbour lists, contact
-  double solid = 1.0;       // per sub-step (pair entry)
-  double solid_call = 1.0;  // per call of the sub-step loop (its set-up)
+  double fluid = 1.0;         // water, neighbour lists, contact
+  double solid = 1.0;         // per sub-step in lanes
+  double solid_scalar = 1.0;  // per sub-step in the scalar loops (and the laws' extra costs)
+  double solid_call = 1.0;    // per call of the sub-step loop (its set-up)
 };
 MachineFactors measure_machine_factors(const CostConstants& k = {});
 CostConstants scaled(const CostConstants& k, const MachineFactors& f);

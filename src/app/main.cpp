@@ -117,9 +117,10 @@ int run_or_check(const std::string& cmd, Request& req) {
       std::printf(")\nmachine: not probed (--no-machine-probe): the calibration runs' costs\n");
     else
       std::printf(
-          ")\nmachine: costs x%.2g (water), x%.2g (solid sub-step) and x%.2g (solid set-up "
-          "per fluid step) of the calibration runs' (measured on built-in probe runs)\n",
-          f.fluid, f.solid, f.solid_call);
+          ")\nmachine: costs x%.2g (water), x%.2g (solid sub-step in lanes), x%.2g (scalar) "
+          "and x%.2g (solid set-up per fluid step) of the calibration runs' (measured on "
+          "built-in probe runs)\n",
+          f.fluid, f.solid, f.solid_scalar, f.solid_call);
     std::printf("%s", describe_cost(predict_cost(sim, scaled({}, f)), threads).c_str());
     return 0;
   }
