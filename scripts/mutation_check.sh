@@ -138,6 +138,10 @@ M = [
  ("sub-step lanes: SVK's lambda tr E left out of S_yy", "src/solid/substep_law_lanes_avx512.cpp",
   "const __m512d Syy = _mm512_add_pd(_mm512_mul_pd(Eyy, two_mu), l);",
   "const __m512d Syy = _mm512_mul_pd(Eyy, two_mu);"),
+ # Session 20: the lanes' lagged sweep (caught on AVX-512F CPUs only).
+ ("sub-step lagged sweep: pass 2 a chunk before its neighbours' pass 1", "src/solid/elastic_substep.cpp",
+  "q - (q - b) % kSubstepLaneChunk + lag + kSubstepLaneChunk);",
+  "q - (q - b) % kSubstepLaneChunk + lag + 2 * kSubstepLaneChunk);"),
  # Session 19: the lists' distance test in eight lanes (caught on AVX-512F CPUs only).
  ("lists' lanes: pairs exactly at the radius kept", "src/core/candidate_lanes_avx512.cpp",
   "_mm512_cmp_pd_mask(d2, lim, _CMP_LT_OQ)", "_mm512_cmp_pd_mask(d2, lim, _CMP_LE_OQ)"),
