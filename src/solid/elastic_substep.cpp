@@ -266,6 +266,10 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
   // The lagged sweep of the lanes (below) keeps one more row.
   w.power.resize(n * static_cast<std::size_t>(block > 0 ? block : lagged ? threads + 1 : threads));
   w.step_sums.resize(static_cast<std::size_t>(steps));
+  // The lagged sweep works on copies of the body's fields it streams, on the workspace's huge
+  // pages (copied in and back per thread share, per call).
+  SubstepStage& stage = w.stage;
+  if (lagged) stage.resize(n);
   SubstepEll& ell = w.ell;
   if (lanes) ell_layout(start, index, n, ell);
   // Position of slot 0 of particle i in the ELL layout (slot s at + 8 s).
@@ -278,7 +282,8 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     // Without an Eulerian switch pass 2 reads no neighbour's x or v½, so its kick and drift
     // update them in place; the Eulerian pair forces read the neighbours' current x and v½,
     // so the next ones go to second buffers, swapped after the pass.
-    std::span<Vec2> x = body.x, vh = w.vhalf;
+    std::span<Vec2> x = lagged ? std::span<Vec2>(stage.x) : std::span<Vec2>(body.x);
+    std::span<Vec2> vh = w.vhalf;
     std::span<Vec2> xn = eulerian ? std::span<Vec2>(w.x_next) : x;
     std::span<Vec2> vhn = eulerian ? std::span<Vec2>(w.vhalf_next) : vh;
     SubstepPairRef* const ref = w.ref.data();
@@ -289,12 +294,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     double* const stress_power = w.stress_power.data();
     SubstepParticleMats* const mats = w.mats.data();
     // Raw pointers: the compiler then keeps them in registers across the law's call.
-    Mat2* const Fb = body.F.data();
-    Mat2* const Pb = body.P.data();
-    const double* const V0 = body.V0.data();
-    const double* const rho0 = body.rho0.data();
+    Mat2* const Fb = lagged ? stage.F.data() : body.F.data();
+    Mat2* const Pb = lagged ? stage.P.data() : body.P.data();
+    const double* const V0 = lagged ? stage.V0.data() : body.V0.data();
+    const double* const rho0 = lagged ? stage.rho0.data() : body.rho0.data();
     const double* const hp = topo.h.data();
-    const double* const m = body.m.data();
+    const double* const m = lagged ? stage.m.data() : body.m.data();
     const std::uint8_t* const clamped = body.clamped.data();
     const Vec2* const clamp_v = body.clamp_velocity.data();
     const Vec2* const fext = w.fext.data();
@@ -304,7 +309,7 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
     Vec2* const f_int = body.f_int.data();
     Vec2* const f_av = body.f_av.data();
     Vec2* const f_hg = body.f_hg.data();
-    double* const energy = body.e.data();
+    double* const energy = lagged ? stage.e.data() : body.e.data();
     // The per-particle parts of the sub-step, shared by the two schedules below (the same
     // arithmetic per particle in either, so the same bits). setup: the per-call pair records,
     // Σ_j g_ij, the external force, a and the first kick and drift.
@@ -608,6 +613,15 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
       const int rank = team.rank(), t = team.size();
       if (team.leader()) team_size = t;
       const auto [b, e] = lane_share(n, rank, t);
+      for (std::size_t i = b; i < e; ++i) {
+        stage.x[i] = body.x[i];
+        stage.F[i] = body.F[i];
+        stage.P[i] = body.P[i];
+        stage.e[i] = body.e[i];
+        stage.m[i] = body.m[i];
+        stage.V0[i] = body.V0[i];
+        stage.rho0[i] = body.rho0[i];
+      }
       for (std::size_t i = b; i < e; ++i) setup(i);
       team.barrier();
       const std::size_t rows = static_cast<std::size_t>(t) + 1;
@@ -665,6 +679,12 @@ void substeps_with(const Law& law, SolidBody& body, int steps, double h, Vec2 g,
         }
         if (s >= 0) w.step_sums[static_cast<std::size_t>(s)] = acc;
         team.barrier();
+      }
+      for (std::size_t i = b; i < e; ++i) {  // the share's own entries, after the last barrier
+        body.x[i] = stage.x[i];
+        body.F[i] = stage.F[i];
+        body.P[i] = stage.P[i];
+        body.e[i] = stage.e[i];
       }
     };
     if (lagged) {

@@ -72,6 +72,24 @@ struct SubstepEll {
   HugeVector<std::uint32_t> reach_lo, reach_hi;
 };
 
+// The lagged sweep's copies of the body's fields it streams every sub-step (x, F, P, e and the
+// constants m, V0, ρ0), on huge pages like the rest (the body's own vectors are on 4 KiB
+// pages): copied in at the start of a call, x, F, P and e back at its end.
+struct SubstepStage {
+  HugeVector<Vec2> x;
+  HugeVector<Mat2> F, P;
+  HugeVector<double> e, m, V0, rho0;
+  void resize(std::size_t n) {
+    x.resize(n);
+    F.resize(n);
+    P.resize(n);
+    e.resize(n);
+    m.resize(n);
+    V0.resize(n);
+    rho0.resize(n);
+  }
+};
+
 struct SubstepWorkspace {
   // Per pair k = (i, j), in the topology's CSR order: reference constants, filled at the
   // start of every call (so a rebuilt topology needs no invalidation), read in the pair
@@ -101,6 +119,7 @@ struct SubstepWorkspace {
   HugeVector<double> stress_power;  // P̄ : Ḟ / ρ0 of the sub-step [W/kg]
   std::vector<Mat2> P_kin;          // P Cᵀ after an Eulerian switch (SolidBody::kinematic_P)
   SubstepEll ell;                   // the pair loops in lanes (two-pass schedule, AVX-512F)
+  SubstepStage stage;               // the lagged sweep's copies of body fields
 
   void resize(std::size_t particles, std::size_t pairs) {
     ref.resize(pairs);
