@@ -144,6 +144,10 @@ M = [
  ("band shares: a steal takes the front, not the back", "src/core/band_shares.h",
   "if (const std::size_t k = take((own + d) % shares_, false); k != count_) return k;",
   "if (const std::size_t k = take((own + d) % shares_, true); k != count_) return k;"),
+ # Session 20: the lanes' lagged sweep (caught on AVX-512F CPUs only).
+ ("sub-step lagged sweep: pass 2 a chunk before its neighbours' pass 1", "src/solid/elastic_substep.cpp",
+  "q - (q - b) % kSubstepLaneChunk + lag + kSubstepLaneChunk);",
+  "q - (q - b) % kSubstepLaneChunk + lag + 2 * kSubstepLaneChunk);"),
  # Session 19: the lists' distance test in eight lanes (caught on AVX-512F CPUs only).
  ("lists' lanes: pairs exactly at the radius kept", "src/core/candidate_lanes_avx512.cpp",
   "_mm512_cmp_pd_mask(d2, lim, _CMP_LT_OQ)", "_mm512_cmp_pd_mask(d2, lim, _CMP_LE_OQ)"),

@@ -81,9 +81,17 @@ constexpr std::size_t kSubstepParticlesPerThread = 1000;
 // Smaller bodies take the two-pass schedule. All give the same bits.
 constexpr std::size_t kSubstepWavefrontParticles = 20000;
 
-// Which schedule runs the sub-steps: Auto (by the rule above) or one forced (tests,
-// benchmarks); Wavefront still falls back to TwoPass where it does not apply.
-enum class SubstepSchedule { Auto, TwoPass, Wavefront };
+// Bodies of at least this many particles whose sub-steps run the pair loops in lanes take
+// them in the lagged sweep (elastic_substep.cpp: pass 2 a few chunks behind pass 1 in one
+// sweep, so that it reads what pass 1 wrote from the cache): on the 60 000-particle ring
+// it gains, on the 2 514-particle ring, whose arrays stay in the cache anyway, it cost
+// ~8 % on 1 thread (docs/validation.md §6 "Solid sub-step", session 20). Same bits.
+constexpr std::size_t kSubstepLaggedParticles = 20000;
+
+// Which schedule runs the sub-steps: Auto (by the rules above) or one forced (tests,
+// benchmarks); Wavefront still falls back to TwoPass where it does not apply, Lagged (the
+// lanes' lagged sweep at any size) to TwoPass where the lanes do not run.
+enum class SubstepSchedule { Auto, TwoPass, Wavefront, Lagged };
 
 // `steps` sub-steps of size h [s] with the fluid force body.f_fluid and gravity g held; needs
 // body.f_int of the current state (the first half kick). Leaves body.x, v, a, F, P, e, f_int,

@@ -426,6 +426,39 @@ TEST(ElasticSubstep, PairLanesBitIdenticalToScalarHourglassViscousOnOff) {
     }
 }
 
+// The lanes' lagged sweep (SubstepSchedule::Lagged, elastic_substep.cpp; the default for
+// bodies of kSubstepLaggedParticles or more, session 20): pass 2 of a block of eight runs in
+// the sweep once pass 1 has done every particle it pairs with, else after the barrier. On the
+// loaded, clamped ring (layer by layer: a particle's partners in the next layer ~640
+// particles on, beyond the lag of 512, so both kinds of block occur) and a block, SVK and J2,
+// 1, 2 and 3 threads (shares of ~1 070 particles: blocks pairing across them), calls of 7, 1
+// and 6 sub-steps (the chains of the powers finished after the region): the bits of the
+// scalar two-pass loops, energy accumulators included.
+TEST(ElasticSubstep, LaggedSweepBitIdenticalToScalar) {
+  if (!substep_lanes_avx512_available()) std::printf("no AVX-512F: both runs scalar\n");
+  ElasticMaterialInput j2 = plate_material(0.5, 1.0);
+  j2.model = J2LinearHardeningModel{2.0e4, 1.0e5};
+  for (const SolidBody& body : {loaded_ring(plate_material(0.5, 1.0)), loaded_ring(j2),
+                                loaded_block(100, 30, plate_material(0.5, 1.0))}) {
+    const double h = 0.5 * stable_time_step(body);
+    const int calls[] = {7, 1, 6};
+    SolidBody ref = body;
+    for (int steps : calls)
+      run_elastic_substeps(ref, steps, h, {0.0, -9.81}, Executor(1), SubstepSchedule::TwoPass,
+                           SubstepPairLoop::Scalar);
+    expect_moved(ref);
+    for (int threads = 1; threads <= 3; ++threads) {
+      SolidBody b = body;
+      const Executor exec(threads);
+      for (int steps : calls)
+        run_elastic_substeps(b, steps, h, {0.0, -9.81}, exec, SubstepSchedule::Lagged,
+                             SubstepPairLoop::Lanes);
+      SCOPED_TRACE(threads);
+      expect_identical(b, ref);
+    }
+  }
+}
+
 // The schedule rule (elastic_substep.h, session 19): a body of kSubstepWavefrontParticles or
 // more takes the two-pass schedule with the pair loops in lanes where they apply (AVX-512F,
 // calls of kMinLaneSubsteps sub-steps or more), else the wavefront. A ring of ~20 900
