@@ -32,7 +32,7 @@ bool InteractionLists::update(FluidParticles& f, const ContactParticles& c, cons
   // Reorder the fluid into cell order so neighbours are close in memory. The grid then holds
   // the same cells with the points renumbered, which is what binning them again would give.
   fluid_grid_.build(f.x, cell_size());
-  f.permute(fluid_grid_.cell_order());
+  f.permute(fluid_grid_.cell_order(), reorder_scratch_, exec);
   fluid_grid_.renumber_in_cell_order();
   build(f.x, c.x, exec, true);
   ++rebuilds_;

@@ -4,6 +4,7 @@
 // the last build, which keeps every pair inside the kernel support in the lists.
 // On each rebuild the fluid particles are reordered into cell order for memory locality.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +74,7 @@ class InteractionLists {
   std::vector<std::uint32_t> cf_in_fc_;
   std::vector<Vec2> fluid_ref_, contact_ref_;  // positions at the last build
   bool contact_grid_built_ = false;            // contact_grid_ bins contact_ref_
+  std::vector<std::byte> reorder_scratch_;     // the fluid reorder's copies (FluidParticles)
   long rebuilds_ = 0;
 };
 

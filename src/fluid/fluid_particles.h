@@ -2,6 +2,7 @@
 // declared once, in visit_fields (core/field_registry.h): resize, reordering, VTK output
 // and checkpoints loop over that list.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -47,7 +48,13 @@ struct FluidParticles {
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n) { resize_fields(*this, n); }
-  // Reorders every field: new[k] = old[perm[k]] (used to keep memory in cell order).
+  // Reorders every field: new[k] = old[perm[k]] (used to keep memory in cell order), through
+  // `scratch`, kept by the caller between reorders, on exec's threads (core/field_registry.h).
+  template <class Index>
+  void permute(const std::vector<Index>& perm, std::vector<std::byte>& scratch,
+               const Executor& exec) {
+    permute_fields(*this, perm, scratch, exec);
+  }
   template <class Index>
   void permute(const std::vector<Index>& perm) {
     permute_fields(*this, perm);
