@@ -83,6 +83,41 @@ BENCHMARK(BM_GsphFluidRates)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The water's reorder into cell order at a neighbour rebuild (coupling/interaction_lists.cpp),
+// every field of the set. Arg 2: 0 = a fresh copy of each field and a serial gather (the
+// reorder before session 22), 1 = the solver's: through scratch storage kept between calls,
+// on the executor's threads (core/field_registry.h).
+void BM_FluidReorder(benchmark::State& st) {
+  FluidParticles f =
+      block(static_cast<int>(st.range(0)), static_cast<int>(st.range(0)) / 2, 0.0025);
+  const std::size_t n = f.size();
+  // The block's rows into cell order, as the first rebuild of a case does (the later ones
+  // move fewer particles, and not as far).
+  CellGrid grid;
+  grid.build(f.x, 2.6 * 0.0025 * 1.1);
+  const std::vector<std::uint32_t> perm = grid.cell_order();
+  const Executor exec(static_cast<int>(st.range(1)));
+  const bool kept = st.range(2) != 0;
+  std::vector<std::byte> scratch;
+  for (auto _ : st) {
+    if (kept) {
+      f.permute(perm, scratch, exec);
+    } else {
+      FluidParticles::visit_fields(f, [&](const FieldSpec&, auto& v) {
+        auto old = v;
+        for (std::size_t k = 0; k < n; ++k) v[k] = old[perm[k]];
+      });
+    }
+    benchmark::DoNotOptimize(f.x.data());
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long>(n));
+}
+BENCHMARK(BM_FluidReorder)
+    ->ArgsProduct({{200, 800}, {1, 2}, {0, 1}})
+    ->ArgNames({"nx", "threads", "kept"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -99,7 +99,8 @@ void permute_fields(Set& set, const std::vector<Index>& perm, std::vector<std::b
     Set::visit_fields(set, [&](const FieldSpec&, auto& f) {
       using T = typename std::decay_t<decltype(f)>::value_type;
       if (f.size() != n) return;
-      std::byte* copy = scratch.data() + (field++ % 2) * half;
+      // A team of one reuses the first half (the footprint of one field, warm in the cache).
+      std::byte* copy = scratch.data() + (team.size() > 1 ? (field++ % 2) * half : 0);
       if (e > b) std::memcpy(copy + b * sizeof(T), f.data() + b, (e - b) * sizeof(T));
       team.barrier();
       const T* old = std::launder(reinterpret_cast<const T*>(copy));
