@@ -16,7 +16,8 @@
 # tests (the water's pass beside small bodies' sub-steps), and (session 17) the executor's
 # tests (the learnt split of weighted loops), the step limit found in the integrator's last
 # sweep and the diverging runs' messages (session 18: also the last sweep inside the pass).
-# Session 19: the lists' distance test in lanes (test_core_cell_grid).
+# Session 19: the lists' distance test in lanes (test_core_cell_grid). Session 22: the
+# rebuild's reorder through kept storage (test_core_field_registry).
 # Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -27,7 +28,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence test_core_cell_grid"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence test_core_cell_grid test_core_field_registry"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -144,6 +145,11 @@ M = [
  ("band shares: a steal takes the front, not the back", "src/core/band_shares.h",
   "if (const std::size_t k = take((own + d) % shares_, false); k != count_) return k;",
   "if (const std::size_t k = take((own + d) % shares_, true); k != count_) return k;"),
+ # Session 22: the rebuild's reorder through kept storage on two threads.
+ ("reorder: no barrier between a field's copy and its gather", "src/core/field_registry.h",
+  "team.barrier();", "(void)team;"),
+ ("reorder: one half of the storage for every field", "src/core/field_registry.h",
+  "(team.size() > 1 ? (field++ % 2) * half : 0)", "(team.size() > 1 ? (field++ % 1) * half : 0)"),
  # Session 20: the lanes' lagged sweep (caught on AVX-512F CPUs only).
  ("sub-step lagged sweep: pass 2 a chunk before its neighbours' pass 1", "src/solid/elastic_substep.cpp",
   "q - (q - b) % kSubstepLaneChunk + lag + kSubstepLaneChunk);",
