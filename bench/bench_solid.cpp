@@ -26,6 +26,12 @@
 //    whose plastic strain grew in an iteration, averaged. Its rate against
 //    BM_RingSubstepsJohnsonCook is the cost of yielding (app/cost_model.h
 //    johnson_cook_yield_factor).
+//  - BM_RingSubstepsPairLoop: the SVK rings of case 0 and of case 3 (2 layers, 240
+//    particles: a body the size of cases/breached_plate.toml's plate) with the pair loops
+//    forced to the lanes or the scalar loops: the per-sub-step cost a small body pays.
+//  - BM_RingSubstepsEulerian: the Johnson–Cook rings with a sector failed at the start,
+//    its failed particles kept in the total-Lagrangian sums or switched to the Eulerian path
+//    (solid/eulerian_failed_interaction.h): the Eulerian path's cost (app/cost_model.h).
 // Callgrind: `valgrind --tool=callgrind --toggle-collect='slamsph::advance_body*'
 //   build/bench/bench_solid --benchmark_filter='BM_RingSubsteps/case:0/threads:1'
 //   --benchmark_min_time=0` counts the sub-step loop only (notes: instructions per
@@ -45,6 +51,7 @@
 #include "io/case_file.h"
 #include "io/case_resolution.h"
 #include "solid/body_dynamics.h"
+#include "solid/elastic_substep.h"
 #include "solid/materials/johnson_cook.h"
 #include "solid/materials/material_presets.h"
 
@@ -75,9 +82,13 @@ struct RingCase {
   double r_mid;
   int layers;
 };
-constexpr RingCase kRings[] = {{0.3, 2}, {0.3, 4}, {0.7958, 6}};
+// Case 3 (2 layers, 240 particles, r 28.6 mm) is the size of cases/breached_plate.toml's
+// plate: the small body of BM_RingSubstepsPairLoop and BM_RingSubstepsEulerian.
+constexpr RingCase kRings[] = {{0.3, 2}, {0.3, 4}, {0.7958, 6}, {0.0286, 2}};
 
-SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false) {
+// `failed`: the fraction of the ring's circumference (a sector about +x) whose particles
+// start failed (a Johnson–Cook ring; as `[body.pre_failed]` of a case).
+SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false, double failed = 0.0) {
   const double t = 0.003;
   // Stored along the structure, as the case builder stores every elastic body
   // (geometry/structure_order.h).
@@ -105,6 +116,10 @@ SolidBody aluminium_ring(const RingCase& rc, bool johnson_cook = false) {
   mat.hourglass = 0.1;
   if (johnson_cook) mat.model = kAl2024T3.model;
   cfg.material = mat;
+  if (failed > 0.0) {
+    const double half = std::numbers::pi * rc.r_mid * failed;  // half the sector's arc
+    cfg.pre_failed_boxes.push_back(Box{{0.0, -half}, {2.0 * rc.r_mid, half}});
+  }
   setup_body(b, cfg);
   // n = 2 ovalisation mode, 1 m/s radial amplitude: half the pairs approach (viscosity on).
   for (std::size_t i = 0; i < b.size(); ++i) {
@@ -184,6 +199,71 @@ BENCHMARK(BM_RingSubstepsJohnsonCookYielding)
     ->Args({0, 1})
     ->ArgNames({"case", "threads"})
     ->Iterations(100)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The scalar pair loops against the lanes, and a small body against a large one: the ring of
+// case c advanced 20 sub-steps per call with the pair loops forced (loop 0: Auto, the lanes
+// on an AVX-512F CPU; 1: Scalar). Case 3 (240 particles) against case 0 (2 514) gives the
+// per-sub-step cost that does not grow with the body (app/cost_model.h solid_substep_ns).
+void BM_RingSubstepsPairLoop(benchmark::State& st) {
+  SolidBody b = aluminium_ring(kRings[st.range(0)]);
+  const SubstepPairLoop loop = st.range(1) == 1 ? SubstepPairLoop::Scalar : SubstepPairLoop::Auto;
+  const Executor exec(static_cast<int>(st.range(2)));
+  long substeps = 0;
+  for (auto _ : st) {
+    constexpr int kSteps = 20;
+    run_elastic_substeps(b, kSteps, stable_time_step(b), {}, exec, SubstepSchedule::Auto, loop);
+    substeps += kSteps;
+  }
+  st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
+  st.counters["particles"] = static_cast<double>(b.size());
+  st.counters["pairs"] =
+      static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
+}
+BENCHMARK(BM_RingSubstepsPairLoop)
+    ->ArgsProduct({{0, 3}, {0, 1}, {1}})
+    ->ArgNames({"case", "loop", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The Eulerian path of failed particles (solid/eulerian_failed_interaction.h) against the
+// Lagrangian one: the Johnson–Cook ring of case c with a sector of `permille`/1000 of its
+// circumference failed at the start, 20 sub-steps per call. path 0: failed particles stay in
+// the total-Lagrangian sums (`failed_particles = "lagrangian"`), scalar pair loops; 1: the
+// same, the lanes (Auto); 2: switched (`failed_particles = "eulerian"`: the failed particles
+// and their reference neighbours leave the TL sums and interact over current pairs rebuilt
+// every sub-step; scalar loops, as every Eulerian body). Counter `switched`: the switched
+// particles. Path 2 less path 0 per sub-step, at two switched counts, is the Eulerian path's
+// cost per particle and per switched particle (app/cost_model.h eulerian_particle_ns,
+// eulerian_switched_ns).
+void BM_RingSubstepsEulerian(benchmark::State& st) {
+  const double failed = 1e-3 * static_cast<double>(st.range(1));
+  SolidBody b = aluminium_ring(kRings[st.range(0)], true, failed);
+  const int path = static_cast<int>(st.range(2));
+  b.eulerian_switch = path == 2;
+  const SubstepPairLoop loop = path == 1 ? SubstepPairLoop::Auto : SubstepPairLoop::Scalar;
+  const Executor exec(static_cast<int>(st.range(3)));
+  // One step as a run takes it: the switch (path 2), its topology and f_int.
+  double t = 0.0;
+  const double dt0 = 20.0 * stable_time_step(b) * (1.0 - 1e-9);
+  advance_body(b, t, dt0, {}, exec);
+  t += dt0;
+  long substeps = 0;
+  for (auto _ : st) {
+    constexpr int kSteps = 20;
+    run_elastic_substeps(b, kSteps, stable_time_step(b), {}, exec, SubstepSchedule::Auto, loop);
+    substeps += kSteps;
+  }
+  st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
+  st.counters["particles"] = static_cast<double>(b.size());
+  st.counters["switched"] = static_cast<double>(b.eulerian.members.size());
+  st.counters["pairs"] =
+      static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
+}
+BENCHMARK(BM_RingSubstepsEulerian)
+    ->ArgsProduct({{0, 3}, {50, 200}, {0, 1, 2}, {1}})
+    ->ArgNames({"case", "permille", "path", "threads"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

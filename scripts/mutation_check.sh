@@ -17,7 +17,8 @@
 # tests (the learnt split of weighted loops), the step limit found in the integrator's last
 # sweep and the diverging runs' messages (session 18: also the last sweep inside the pass).
 # Session 19: the lists' distance test in lanes (test_core_cell_grid). Session 22: the
-# rebuild's reorder through kept storage (test_core_field_registry).
+# rebuild's reorder through kept storage (test_core_field_registry) and the cost model's
+# Eulerian path (test_app_cost_eulerian, predictions only).
 # Only these and slamsph are rebuilt per mutation.
 # Usage: scripts/mutation_check.sh [OUT=results/mutation_check] [NAME_FILTER=regex]
 set -euo pipefail
@@ -28,7 +29,7 @@ filter=${2:-.}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 work=$out/src_copy
-TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence test_core_cell_grid test_core_field_registry"}
+TESTS=${TESTS:-"test_io_entry_series test_app_absorbing_zone test_fluid_riemann test_fluid_gsph_limiter test_fluid_momentum test_coupling_contact test_coupling_cavitation test_coupling_geometry test_coupling_golden test_app_setup_warnings test_app_impact_warning test_app_slamming_constant_speed test_app_substep_average test_app_contact_physics test_app_spacing_ratio test_app_cylinder_entry test_app_coupling test_app_still_water test_fluid_pair_band test_solid_material test_solid_substep test_app_threads test_coupling_contact_lanes test_core_parallel test_app_fused_sweeps test_app_divergence test_core_cell_grid test_core_field_registry test_app_cost_eulerian"}
 rm -rf "$work"
 git clone -q --local --no-hardlinks "$root" "$work"
 # The working tree's uncommitted changes are part of what is checked.
@@ -172,6 +173,12 @@ M = [
  # terms to the water computed before the pass and added there (app/fsi_stepper.cpp step).
  ("kick in the pass: the contact's terms not added to a", "src/app/fsi_stepper.cpp",
   "w.a[i] += ca[i];", "w.a[i] += 0.0 * ca[i];"),
+ # Session 22: the cost model's Eulerian path of failed particles (app/cost_model.cpp).
+ ("cost model: the Eulerian path's terms left out", "src/app/cost_model.cpp",
+  "    if (bc.switched > 0)", "    if (false && bc.switched > 0)"),
+ ("cost model: the switch at the start not seen", "src/app/cost_model.cpp",
+  "  if (body.eulerian.active) return body.eulerian.members.size();",
+  "  return body.eulerian.active ? body.eulerian.members.size() : 0;"),
 ]
 for name, f, a, b in M:
     print("\t".join([name, f, a, b]))

@@ -12,12 +12,29 @@
 #include "io/case_file.h"
 #include "solid/body_dynamics.h"
 #include "solid/elastic_substep.h"
+#include "solid/eulerian_failed_interaction.h"
 #include "solid/materials/johnson_cook.h"
 #include "solid/solid_body.h"
 #include "solid/substep_pair_lanes.h"
 
 namespace slamsph {
 namespace {
+
+// The particles of an elastic body that run the Eulerian path from its first step: the switch
+// is made by advance_body (update_eulerian_switch), not when the body is built, so a body
+// whose particles start failed (`[body.pre_failed]`) with `failed_particles = "eulerian"`
+// has body.eulerian.active false here; the switch is made on a copy, as the first step will.
+std::size_t switched_at_start(const SolidBody& body) {
+  if (!body.is_elastic() || !body.eulerian_switch) return 0;
+  if (body.eulerian.active) return body.eulerian.members.size();
+  const std::vector<double>* failed = failed_flags(body);
+  if (failed == nullptr ||
+      std::none_of(failed->begin(), failed->end(), [](double f) { return f > 0.5; }))
+    return 0;
+  SolidBody b = body;
+  update_eulerian_switch(b, Executor(1));
+  return b.eulerian.members.size();
+}
 
 // y_small at x ≤ x_small, y_large at x ≥ x_large, linear in log x between.
 double log_interpolate(double x, double x_small, double x_large, double y_small, double y_large) {
@@ -400,6 +417,7 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
     bc.elastic = b.is_elastic();
     bc.stable_step = stable_time_step(b);
     bc.johnson_cook = std::holds_alternative<JohnsonCook>(b.material.law);
+    bc.switched = switched_at_start(b);
     if (share && bc.stable_step < dt) {
       dt = bc.stable_step;
       c.limiter = "solid CFL (body " + b.name + ")";
@@ -476,7 +494,7 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
     // AVX-512F CPU, without an Eulerian switch (solid/elastic_substep.cpp); then the sub-step
     // costs per particle, else per pair entry (see the header).
     bc.lanes = bc.substeps_per_step / static_cast<long>(calls) >= kMinLaneSubsteps &&
-               substep_lanes_avx512_available() && !body.eulerian.active;
+               substep_lanes_avx512_available() && bc.switched == 0;
     const double sub_seconds = bc.lanes
                                    ? 1e-9 * n * subs *
                                          log_interpolate(n, k.solid_n_small, k.solid_n_large,
@@ -485,6 +503,13 @@ CostPrediction predict_cost(const Simulation& sim, const CostConstants& k) {
                                          log_interpolate(n, k.solid_n_small, k.solid_n_large,
                                                          k.solid_pair_ns, k.solid_pair_ns_large);
     bc.seconds = wet * sub_seconds + 1e-9 * k.solid_call_ns * n * calls * steps;
+    // The Eulerian path (see CostConstants): the current pairs rebuilt every sub-step over the
+    // body, the switched particles' velocity gradients, stress maps and pair forces; beyond
+    // the scalar Lagrangian sub-step of the same body over its reference pairs.
+    if (bc.switched > 0)
+      bc.seconds +=
+          1e-9 * subs *
+          (k.eulerian_particle_ns * n + k.eulerian_switched_ns * static_cast<double>(bc.switched));
     if (bc.johnson_cook) {
       const PlasticEstimate pe = estimate_plastic(
           body, std::get<JohnsonCook>(body.material.law).parameters().jc, num.end_time);
@@ -650,7 +675,7 @@ CostConstants scaled(const CostConstants& k, const MachineFactors& f) {
   for (double* x : {&c.solid_lane_ns, &c.solid_lane_ns_large}) *x *= f.solid;
   // The laws' own work runs scalar in either loop (solid/substep_law_lanes.h: SVK's excepted).
   for (double* x : {&c.solid_pair_ns, &c.solid_pair_ns_large, &c.johnson_cook_elastic_ns,
-                    &c.johnson_cook_yield_ns})
+                    &c.johnson_cook_yield_ns, &c.eulerian_particle_ns, &c.eulerian_switched_ns})
     *x *= f.solid_scalar;
   c.solid_call_ns *= f.solid_call;
   // A failure zone's gathers: a cell grid, normals and layers, scalar loops over the body.
@@ -683,13 +708,17 @@ std::string describe_cost(const CostPrediction& c, int threads) {
   }
   for (const BodyCost& b : c.bodies) {
     if (b.elastic)
-      std::snprintf(buf, sizeof buf,
-                    "  body %s: %zu particles, elastic, %.3g pairs per particle, stable step "
-                    "%.3g s, %ld sub-steps per fluid step (pair loops %s), law %s\n",
-                    b.name.c_str(), b.particles,
-                    static_cast<double>(b.pairs) / static_cast<double>(b.particles), b.stable_step,
-                    b.substeps_per_step, b.lanes ? "in lanes" : "scalar",
-                    b.johnson_cook ? "johnson_cook" : "svk");
+      std::snprintf(
+          buf, sizeof buf,
+          "  body %s: %zu particles, elastic, %.3g pairs per particle, stable step "
+          "%.3g s, %ld sub-steps per fluid step (pair loops %s%s), law %s\n",
+          b.name.c_str(), b.particles,
+          static_cast<double>(b.pairs) / static_cast<double>(b.particles), b.stable_step,
+          b.substeps_per_step, b.lanes ? "in lanes" : "scalar",
+          b.switched > 0
+              ? ("; " + std::to_string(b.switched) + " particles on the Eulerian path").c_str()
+              : "",
+          b.johnson_cook ? "johnson_cook" : "svk");
     else
       std::snprintf(buf, sizeof buf, "  body %s: %zu particles, rigid\n", b.name.c_str(),
                     b.particles);

@@ -49,7 +49,8 @@
 //             2 000-particle plate, 3.88, both 26 ns per particle-sub-step on one thread;
 //             per pair entry the plate had measured 1.3x cheaper, and a probe of it put the
 //             skins 15-22 % under their runs); shorter calls, other CPUs
-//             and Eulerian bodies run the scalar loops, c_pair P_b per sub-step over P_b pair
+//             and bodies with switched particles run the scalar loops, c_pair P_b per
+//             sub-step over P_b pair
 //             entries (each pair from both sides; the plate and the ring 18.0 and 16.8 ns per
 //             entry before the lanes, session 13). c_sub log-linear in N_b between 25 000 and
 //             60 000 particles, where the arrays leave the caches; 1.24x with water (the
@@ -57,7 +58,11 @@
 //             per-call set-up of the sub-step loop, solid/elastic_substep.cpp, per particle. c_jc
 //             the Johnson–Cook law's elastic path per particle-sub-step, c_yield the return mapping
 //             of a yielding particle, f_y the fraction of its particle-sub-steps that yield,
-//             estimated from the body's loading (below)
+//             estimated from the body's loading (below); a body whose failed particles are
+//             switched to the Eulerian path from the start (failed_particles = "eulerian",
+//             particles failed at the start) c_eul N_b + c_sw N_sw more per sub-step with N_sw
+//             switched particles (the switch made on a copy of the body as its first step will:
+//             the built body has not made it; session 22, BM_RingSubstepsEulerian)
 //   failure = c_fail N_b per fluid step once a body with failure has failed particles: every
 //             gather of its state rebuilds a cell grid over the body, the normals near the
 //             failed particles and the layers behind the crack faces (coupling/
@@ -148,10 +153,21 @@ struct CostConstants {
   // 20 sub-steps per call) 37.9-38.3 M particle-steps/s = 26.4 ns; the 2 000-particle plate
   // of session 18's probe (3.88 pair entries per particle against the ring's 3.0) 25.9 ns (its
   // factor x0.31 of 21.5 ns per entry): per particle, not per entry, in the lanes.
+  // A small body pays no per-sub-step cost of its own on top (session 22,
+  // BM_RingSubstepsPairLoop, one thread under quiet.py, medians of 5: the 240-particle ring
+  // 40.7 M particle-steps/s in lanes and 29.1 M scalar against the 2 514-particle ring's 37.0
+  // and 26.9 M, i.e. 8-9 % cheaper per particle, no fixed part): no constant for it.
   double solid_lane_ns = 23.5;
-  // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3. Kept at
-  // the ratio of session 18's per-entry constants (24 / 21.5); not re-measured with the lanes.
-  double solid_lane_ns_large = 26.2;
+  // ≥ solid_n_large particles (log-linear between): the sub-step's arrays leave L2/L3.
+  // Session 22, one thread under quiet.py, with the lagged sweep and the 2 MiB pages of
+  // session 20 (bodies ≥ 20 000 particles): `bench_solid --benchmark_filter=
+  // 'BM_RingSubsteps/case:[02]/threads:1' --benchmark_repetitions=5`, two calls, medians of 5:
+  // the 60 000-particle ring (6 layers, 3.67 pair entries per particle) 20.3 and 17.6 M
+  // particle-steps/s = 49.2 and 56.9 ns per particle-sub-step, against the 2 514-particle ring
+  // (case 0) in the same calls 27.6 and 29.4 ns: 1.86x, taken on solid_lane_ns (was 26.2, the
+  // ratio of session 18's per-entry constants, not measured with the lanes). No shipped case
+  // has a body this large.
+  double solid_lane_ns_large = 43.7;
   // Per elastic pair entry per sub-step (SVK) in the scalar pair loops (calls of fewer than
   // kMinLaneSubsteps sub-steps, CPUs without AVX-512F, Eulerian bodies), ≤ solid_n_small
   // particles: the probe ring's calls of 7 and of 1 sub-step (measure_machine_factors),
@@ -175,6 +191,27 @@ struct CostConstants {
   // solid phase (one sub-step per call, 3.79 entries per particle) 82 ns per particle and
   // call = 25 + 3.79 x 14.5. Scaled by its own machine factor.
   double solid_call_ns = 25.0;
+  // The Eulerian path of failed particles (solid/eulerian_failed_interaction.h; a body with
+  // failed_particles = "eulerian" and particles failed at the start, `[body.pre_failed]`)
+  // beyond the scalar Lagrangian sub-step of the same body (whose pair loops it runs), per
+  // sub-step: per particle of the body (the current pairs rebuilt every sub-step: a cell grid
+  // over the switched particles searched from every particle, the counts and fills; the
+  // Eulerian force's call per particle) and per switched particle (its velocity gradient,
+  // F, stress map and pair forces over its current neighbours within 2h).
+  // BM_RingSubstepsEulerian (bench/bench_solid.cpp: the Johnson–Cook rings with a sector failed at
+  // the start, path 2 switched against path 0 kept in the total-Lagrangian sums, both scalar, 20
+  // sub-steps per call), one thread under quiet.py, medians of 3 and of 5 in two calls
+  // (session 22, `bench_solid --benchmark_filter=BM_RingSubstepsEulerian
+  // --benchmark_repetitions=5`): per sub-step the 2 514-particle ring 69-77 µs more with 130
+  // switched particles, 148-169 µs with 548; the 240-particle ring 5.7-7.3 µs with 16,
+  // 14.3-15.8 µs with 56; fitted (least squares on the relative error) 15 ns per particle and
+  // 205 ns per switched particle (the eight figures within −15/+22 %). The 240-particle ring's
+  // Eulerian path against its Lagrangian one in lanes (path 1, what a run with
+  // failed_particles = "lagrangian" takes): 1.45x with 16 switched, 1.80x with 56. Not
+  // multiplied by solid_wet_factor (measured on the body alone, like the laws' terms);
+  // scaled by the scalar loops' machine factor.
+  double eulerian_particle_ns = 15.0;
+  double eulerian_switched_ns = 205.0;
   // The Johnson–Cook law's elastic path per particle-sub-step beyond the SVK law (its return
   // mapping's yield test, the Mie–Grüneisen pressure, the heating and the damage update run
   // per particle, scalar, in either pair loop): BM_RingSubstepsJohnsonCook against
@@ -241,6 +278,9 @@ struct BodyCost {
   long substeps_per_step = 0;  // elastic: per fluid step; rigid: 0
   bool lanes = false;          // elastic: its sub-steps' pair loops run in lanes
   bool johnson_cook = false;   // its law is Johnson–Cook (costed with yield and failure)
+  // Particles on the Eulerian path from the first step (failed at the start, or next to a
+  // failed one, with failed_particles = "eulerian"; solid/eulerian_failed_interaction.h).
+  std::size_t switched = 0;
   // Johnson–Cook bodies, estimated from the loading (see the header comment): how it is
   // loaded ("impact", "clamps pulled apart", "no clamps": not estimated), the fraction of
   // its particle-sub-steps that yield, when it starts to yield and to fail [s] (+inf: not
