@@ -205,11 +205,11 @@ BENCHMARK(BM_RingSubstepsJohnsonCookYielding)
 // The scalar pair loops against the lanes, and a small body against a large one: the ring of
 // case c advanced 20 sub-steps per call with the pair loops forced (loop 0: Auto, the lanes
 // on an AVX-512F CPU; 1: Scalar). Case 3 (240 particles) against case 0 (2 514) gives the
-// per-sub-step cost that does not grow with the body (app/cost_model.h solid_substep_ns).
-void BM_RingSubstepsPairLoop(benchmark::State& st) {
-  SolidBody b = aluminium_ring(kRings[st.range(0)]);
-  const SubstepPairLoop loop = st.range(1) == 1 ? SubstepPairLoop::Scalar : SubstepPairLoop::Auto;
-  const Executor exec(static_cast<int>(st.range(2)));
+// per-sub-step cost that does not grow with the body (none was found: app/cost_model.h, the
+// comment of solid_lane_ns).
+// Calls of 20 sub-steps of b with the pair loops `loop`, timed; items = particle-sub-steps.
+void time_substep_calls(benchmark::State& st, SolidBody& b, const Executor& exec,
+                        SubstepPairLoop loop) {
   long substeps = 0;
   for (auto _ : st) {
     constexpr int kSteps = 20;
@@ -220,6 +220,12 @@ void BM_RingSubstepsPairLoop(benchmark::State& st) {
   st.counters["particles"] = static_cast<double>(b.size());
   st.counters["pairs"] =
       static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
+}
+
+void BM_RingSubstepsPairLoop(benchmark::State& st) {
+  SolidBody b = aluminium_ring(kRings[st.range(0)]);
+  const SubstepPairLoop loop = st.range(1) == 1 ? SubstepPairLoop::Scalar : SubstepPairLoop::Auto;
+  time_substep_calls(st, b, Executor(static_cast<int>(st.range(2))), loop);
 }
 BENCHMARK(BM_RingSubstepsPairLoop)
     ->ArgsProduct({{0, 3}, {0, 1}, {1}})
@@ -249,17 +255,8 @@ void BM_RingSubstepsEulerian(benchmark::State& st) {
   const double dt0 = 20.0 * stable_time_step(b) * (1.0 - 1e-9);
   advance_body(b, t, dt0, {}, exec);
   t += dt0;
-  long substeps = 0;
-  for (auto _ : st) {
-    constexpr int kSteps = 20;
-    run_elastic_substeps(b, kSteps, stable_time_step(b), {}, exec, SubstepSchedule::Auto, loop);
-    substeps += kSteps;
-  }
-  st.SetItemsProcessed(substeps * static_cast<long>(b.size()));
-  st.counters["particles"] = static_cast<double>(b.size());
+  time_substep_calls(st, b, exec, loop);
   st.counters["switched"] = static_cast<double>(b.eulerian.members.size());
-  st.counters["pairs"] =
-      static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
 }
 BENCHMARK(BM_RingSubstepsEulerian)
     ->ArgsProduct({{0, 3}, {50, 200}, {0, 1, 2}, {1}})
