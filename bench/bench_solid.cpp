@@ -202,11 +202,6 @@ BENCHMARK(BM_RingSubstepsJohnsonCookYielding)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The scalar pair loops against the lanes, and a small body against a large one: the ring of
-// case c advanced 20 sub-steps per call with the pair loops forced (loop 0: Auto, the lanes
-// on an AVX-512F CPU; 1: Scalar). Case 3 (240 particles) against case 0 (2 514) gives the
-// per-sub-step cost that does not grow with the body (none was found: app/cost_model.h, the
-// comment of solid_lane_ns).
 // Calls of 20 sub-steps of b with the pair loops `loop`, timed; items = particle-sub-steps.
 void time_substep_calls(benchmark::State& st, SolidBody& b, const Executor& exec,
                         SubstepPairLoop loop) {
@@ -222,6 +217,11 @@ void time_substep_calls(benchmark::State& st, SolidBody& b, const Executor& exec
       static_cast<double>(b.topology.pairs.index.size()) / static_cast<double>(b.size());
 }
 
+// The scalar pair loops against the lanes, and a small body against a large one: the ring of
+// case c advanced 20 sub-steps per call with the pair loops forced (loop 0: Auto, the lanes
+// on an AVX-512F CPU; 1: Scalar). Case 3 (240 particles) against case 0 (2 514) gives the
+// per-sub-step cost that does not grow with the body (none was found: app/cost_model.h, the
+// comment of solid_lane_ns).
 void BM_RingSubstepsPairLoop(benchmark::State& st) {
   SolidBody b = aluminium_ring(kRings[st.range(0)]);
   const SubstepPairLoop loop = st.range(1) == 1 ? SubstepPairLoop::Scalar : SubstepPairLoop::Auto;
